@@ -1,0 +1,55 @@
+// What the contact postprocessor finds: sheet surface nodes near tools.
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+
+#include <array>
+#include <vector>
+
+namespace formsolve
+{
+  namespace contact
+  {
+    using dealii::Point;
+    using dealii::Tensor;
+
+    /// A sheet surface node: its velocity DoFs and reference position.
+    template <int dim>
+    struct ContactNode
+    {
+      std::array<dealii::types::global_dof_index, dim> dofs;
+      Point<dim>                                       reference_position;
+      double area = 0; // lumped surface area in the current configuration (mm^2)
+    };
+
+    /// One node near one tool, evaluated at the current velocity iterate.
+    template <int dim>
+    struct ContactPair
+    {
+      unsigned int   node;
+      unsigned int   tool;
+      double         gap;           // signed distance at the start of the step (mm)
+      double         predicted_gap; // gap + n.(v - v_tool) dt (mm)
+      Tensor<1, dim> normal;        // outward tool normal at the closest point
+      Tensor<1, dim> relative_velocity; // v - v_tool (mm/s)
+      bool           active;            // predicted_gap < 0
+    };
+
+    template <int dim>
+    struct ContactSet
+    {
+      std::vector<ContactNode<dim>> nodes; // locally owned surface nodes
+      std::vector<ContactPair<dim>> pairs; // pairs within the search distance
+
+      unsigned int n_active() const
+      {
+        unsigned int n = 0;
+        for (const auto &p : pairs)
+          n += p.active;
+        return n;
+      }
+    };
+  } // namespace contact
+} // namespace formsolve

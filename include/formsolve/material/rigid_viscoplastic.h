@@ -1,0 +1,48 @@
+// The rigid-viscoplastic point law of the flow formulation.
+#pragma once
+
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <formsolve/material/flow_stress.h>
+
+namespace formsolve
+{
+  namespace material
+  {
+    using dealii::SymmetricTensor;
+
+    /// Stress and tangent at one quadrature point for a given strain rate,
+    /// with the strain integrated implicitly: eps = eps_n + dt * rate.
+    template <int dim>
+    struct PointResponse
+    {
+      SymmetricTensor<2, dim> deviatoric_stress;
+      SymmetricTensor<4, dim> tangent; // d(deviatoric stress)/d(strain rate)
+      double                  equivalent_strain_rate;
+      double                  flow_stress;
+      double                  viscosity; // mu: s' = 2 mu dev(D)
+    };
+
+    template <int dim>
+    class RigidViscoplastic
+    {
+    public:
+      explicit RigidViscoplastic(const parameters::Material &p);
+
+      /// @p newton false gives the secant (direct-iteration) tangent 2 mu P_dev.
+      PointResponse<dim> evaluate(const SymmetricTensor<2, dim> &strain_rate,
+                                  const double strain_old, const double dt,
+                                  const bool newton) const;
+
+      /// K_v in sigma_m = K_v tr(D) (MPa s).
+      double bulk_viscosity() const { return bulk; }
+
+      const FlowStress &flow_stress() const { return law; }
+
+    private:
+      FlowStress law;
+      double     cutoff; // limiting strain rate
+      double     bulk;
+    };
+  } // namespace material
+} // namespace formsolve

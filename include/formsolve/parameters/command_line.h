@@ -1,0 +1,31 @@
+// The command-line front: input file, --set overrides, --print-parameters.
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    struct CommandLine
+    {
+      std::string input_file;
+      /// "Subsection/Sub/Entry" -> value, applied after the file, in order.
+      std::vector<std::pair<std::string, std::string>> overrides;
+      bool help             = false;
+      bool print_parameters = false;
+
+      /// Throws dealii::ExcMessage naming the bad argument.
+      static CommandLine parse(int argc, char **argv);
+      static std::string usage();
+    };
+
+    /// Read the input file into @p prm (declared already), then apply the
+    /// overrides. Errors name the file or the entry.
+    void read_input(dealii::ParameterHandler &prm, const CommandLine &cl);
+  } // namespace parameters
+} // namespace formsolve

@@ -1,0 +1,36 @@
+// State stored at quadrature points, transferable by refinement.
+#pragma once
+
+#include <deal.II/base/quadrature_point_data.h>
+
+#include <vector>
+
+namespace formsolve
+{
+  namespace simulation
+  {
+    struct QuadraturePointHistory
+      : public dealii::TransferableQuadraturePointData
+    {
+      double strain           = 0; // equivalent plastic strain (-)
+      double strain_rate      = 0; // equivalent strain rate of the last step (1/s)
+      double flow_stress      = 0; // MPa
+      double mean_stress      = 0; // MPa
+      double thickness_strain = 0; // log strain along the through-thickness direction
+
+      unsigned int number_of_values() const override { return 5; }
+      void pack_values(std::vector<double> &v) const override
+      {
+        v = {strain, strain_rate, flow_stress, mean_stress, thickness_strain};
+      }
+      void unpack_values(const std::vector<double> &v) override
+      {
+        strain           = v[0];
+        strain_rate      = v[1];
+        flow_stress      = v[2];
+        mean_stress      = v[3];
+        thickness_strain = v[4];
+      }
+    };
+  } // namespace simulation
+} // namespace formsolve

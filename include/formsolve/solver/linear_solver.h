@@ -1,0 +1,33 @@
+// Direct (Amesos MUMPS/KLU) or iterative (GMRES/CG + ML AMG) linear solves.
+#pragma once
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <formsolve/parameters/parameters.h>
+
+#include <vector>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    class LinearSolver
+    {
+    public:
+      /// @p constant_modes: the rigid translations per component, for AMG.
+      LinearSolver(const parameters::LinearSolver &     p,
+                   const std::vector<std::vector<bool>> &constant_modes);
+
+      /// Solves A x = b; returns the iteration count (1 for direct solves).
+      /// Throws with a message when the solver fails.
+      unsigned int solve(const dealii::TrilinosWrappers::SparseMatrix &A,
+                         dealii::TrilinosWrappers::MPI::Vector &       x,
+                         const dealii::TrilinosWrappers::MPI::Vector & b) const;
+
+    private:
+      parameters::LinearSolver        prm;
+      std::vector<std::vector<bool>> constant_modes;
+    };
+  } // namespace solver
+} // namespace formsolve

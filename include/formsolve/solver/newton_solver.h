@@ -1,0 +1,59 @@
+// Newton-Raphson with line search and a fallback to direct (Picard) iteration.
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <formsolve/parameters/parameters.h>
+
+#include <string>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    /// What the Newton solver needs from a discrete problem. The problem owns
+    /// its matrix and residual; the solver only steers.
+    class NonlinearSystem
+    {
+    public:
+      using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+      virtual ~NonlinearSystem() = default;
+
+      /// Evaluate contact and assemble the residual (and the tangent: Newton
+      /// or secant) at @p v. Returns |r|.
+      virtual double assemble(const VectorType &v, const bool newton) = 0;
+      /// A force scale for |r| from the last assembly (internal forces).
+      virtual double force_scale() const = 0;
+      /// Solve K dv = -r with the last assembled K, r. Returns iterations.
+      virtual unsigned int solve(VectorType &dv) = 0;
+      /// Whether the contact set changed since the previous call.
+      virtual bool contact_set_changed() = 0;
+    };
+
+    struct NewtonReport
+    {
+      bool         converged         = false;
+      unsigned int iterations        = 0;
+      unsigned int linear_iterations = 0;
+      unsigned int picard_iterations = 0;
+      double       residual          = 0;
+      std::string  failure;
+    };
+
+    class NewtonSolver
+    {
+    public:
+      NewtonSolver(const parameters::NonlinearSolver &p,
+                   dealii::ConditionalOStream         log);
+
+      /// Iterate from @p v (locally owned entries, constraints satisfied).
+      NewtonReport solve(NonlinearSystem &system,
+                         NonlinearSystem::VectorType &v) const;
+
+    private:
+      parameters::NonlinearSolver prm;
+      mutable dealii::ConditionalOStream log;
+    };
+  } // namespace solver
+} // namespace formsolve

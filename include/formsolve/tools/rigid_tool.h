@@ -1,0 +1,48 @@
+// The interface every rigid tool offers to contact: exact geometry and motion.
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <string>
+
+namespace formsolve
+{
+  namespace tools
+  {
+    using dealii::Point;
+    using dealii::Tensor;
+
+    template <int dim>
+    class RigidTool
+    {
+    public:
+      virtual ~RigidTool() = default;
+
+      /// Signed distance from @p p to the tool surface: positive outside the
+      /// tool, negative inside (penetration). @p normal receives the unit
+      /// outward normal of the tool at the closest point.
+      virtual double signed_distance(const Point<dim> &p,
+                                     Tensor<1, dim> &  normal) const = 0;
+
+      /// The point of the tool surface closest to @p p.
+      Point<dim> closest_point(const Point<dim> &p) const
+      {
+        Tensor<1, dim> n;
+        const double   d = signed_distance(p, n);
+        return p - d * n;
+      }
+
+      /// Rigid translation velocity of the tool (mm/s).
+      virtual Tensor<1, dim> velocity() const = 0;
+
+      /// Translate the tool by velocity() * dt.
+      virtual void advance(const double dt) = 0;
+
+      /// Distance travelled so far (mm).
+      virtual double travel() const = 0;
+
+      virtual std::string name() const = 0;
+    };
+  } // namespace tools
+} // namespace formsolve

@@ -1,0 +1,43 @@
+// The tools of a run, built from the Tools subsection, and their motion.
+#pragma once
+
+#include <formsolve/parameters/parameters.h>
+#include <formsolve/tools/rigid_tool.h>
+
+#include <memory>
+#include <vector>
+
+namespace formsolve
+{
+  namespace tools
+  {
+    template <int dim>
+    class ToolSet
+    {
+    public:
+      /// Builds the enabled tools around a sheet occupying 0 <= z <= thickness.
+      ToolSet(const parameters::Tools &p, const parameters::Contact &c,
+              const double thickness);
+
+      unsigned int        size() const { return tools.size(); }
+      const RigidTool<dim> &operator[](const unsigned int i) const { return *tools[i]; }
+      double friction_coefficient(const unsigned int i) const { return friction[i]; }
+      /// Fixed penalty of tool i (N/mm^3).
+      double penalty_factor(const unsigned int i) const { return penalty[i]; }
+      /// Column/field name of tool i: punch, die, blank_holder.
+      const std::string &key(const unsigned int i) const { return keys[i]; }
+      unsigned int punch_index() const { return 0; }
+
+      void   advance(const double dt);
+      double punch_travel() const { return tools[0]->travel(); }
+      double punch_stroke() const { return stroke; }
+      double punch_speed() const { return speed; }
+
+    private:
+      std::vector<std::unique_ptr<RigidTool<dim>>> tools;
+      std::vector<double>                          friction, penalty;
+      std::vector<std::string>                     keys;
+      double                                       stroke, speed;
+    };
+  } // namespace tools
+} // namespace formsolve

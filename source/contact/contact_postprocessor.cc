@@ -1,0 +1,172 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <formsolve/contact/contact_law.h>
+#include <formsolve/contact/contact_postprocessor.h>
+#include <formsolve/geometry/blank_mesh.h>
+
+#include <unordered_map>
+
+namespace formsolve
+{
+  namespace contact
+  {
+    using namespace dealii;
+
+    template <int dim>
+    ContactPostprocessor<dim>::ContactPostprocessor(const double search_distance,
+                                                    const double v0)
+      : search_distance(search_distance)
+      , v0(v0)
+    {}
+
+    template <int dim>
+    void ContactPostprocessor<dim>::setup(const DoFHandler<dim> &dof_handler,
+                                          const Mapping<dim> &   reference_mapping,
+                                          ContactSet<dim> &      set) const
+    {
+      set.nodes.clear();
+      set.pairs.clear();
+      const auto &fe    = dof_handler.get_fe();
+      const auto  owned = dof_handler.locally_owned_dofs();
+      std::map<types::global_dof_index, Point<dim>> support;
+      DoFTools::map_dofs_to_support_points(reference_mapping, dof_handler, support);
+
+      std::unordered_map<types::global_dof_index, unsigned int> seen;
+      std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == geometry::free_surface)
+              {
+                cell->face(f)->get_dof_indices(face_dofs);
+                // Group the face DoFs by support point (base shape function).
+                std::map<unsigned int, std::array<types::global_dof_index, dim>> by_point;
+                for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                  {
+                    const auto ci = fe.face_system_to_component_index(i);
+                    by_point[ci.second][ci.first] = face_dofs[i];
+                  }
+                for (const auto &[base, dofs] : by_point)
+                  if (owned.is_element(dofs[0]) && seen.count(dofs[0]) == 0)
+                    {
+                      seen[dofs[0]] = set.nodes.size();
+                      ContactNode<dim> node;
+                      node.dofs               = dofs;
+                      node.reference_position = support[dofs[0]];
+                      set.nodes.push_back(node);
+                    }
+              }
+    }
+
+    template <int dim>
+    void ContactPostprocessor<dim>::update_areas(const DoFHandler<dim> &dof_handler,
+                                                 const Mapping<dim> &   mapping,
+                                                 ContactSet<dim> &      set) const
+    {
+      const auto &fe = dof_handler.get_fe();
+      VectorType  area(dof_handler.locally_owned_dofs(),
+                      dof_handler.get_triangulation().get_communicator());
+      const QGauss<dim - 1> quadrature(fe.degree + 1);
+      FEFaceValues<dim>     fe_face(mapping, fe, quadrature,
+                                update_values | update_JxW_values);
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      Vector<double>                       local(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == geometry::free_surface)
+              {
+                fe_face.reinit(cell, f);
+                local = 0;
+                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                  if (fe.system_to_component_index(i).first == 0)
+                    for (unsigned int q = 0; q < quadrature.size(); ++q)
+                      local[i] += fe_face.shape_value_component(i, q, 0) *
+                                  fe_face.JxW(q);
+                cell->get_dof_indices(dofs);
+                area.add(dofs, local);
+              }
+      area.compress(VectorOperation::add);
+      for (auto &node : set.nodes)
+        node.area = area[node.dofs[0]];
+    }
+
+    template <int dim>
+    void ContactPostprocessor<dim>::evaluate(const tools::ToolSet<dim> &tools,
+                                             const VectorType &         u,
+                                             const VectorType &         v,
+                                             const double               dt,
+                                             ContactSet<dim> &          set) const
+    {
+      set.pairs.clear();
+      for (unsigned int k = 0; k < set.nodes.size(); ++k)
+        {
+          const auto &   node = set.nodes[k];
+          Point<dim>     x    = node.reference_position;
+          Tensor<1, dim> vel;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              x[d] += u[node.dofs[d]];
+              vel[d] = v[node.dofs[d]];
+            }
+          for (unsigned int t = 0; t < tools.size(); ++t)
+            {
+              ContactPair<dim> pair;
+              pair.gap = tools[t].signed_distance(x, pair.normal);
+              if (pair.gap > search_distance)
+                continue;
+              pair.node              = k;
+              pair.tool              = t;
+              pair.relative_velocity = vel - tools[t].velocity();
+              pair.predicted_gap     = pair.gap + (pair.normal * pair.relative_velocity) * dt;
+              pair.active            = pair.predicted_gap < 0;
+              set.pairs.push_back(pair);
+            }
+        }
+    }
+
+    template <int dim>
+    ContactStatistics<dim>
+    ContactPostprocessor<dim>::statistics(const tools::ToolSet<dim> &tools,
+                                          const ContactSet<dim> &    set,
+                                          const std::vector<double> &epsilon,
+                                          const double               dt,
+                                          const MPI_Comm             comm) const
+    {
+      ContactStatistics<dim> s;
+      s.tool_force.resize(tools.size());
+      double sum_penetration = 0;
+      for (unsigned int k = 0; k < set.pairs.size(); ++k)
+        {
+          const auto &pair = set.pairs[k];
+          if (!pair.active)
+            continue;
+          const auto f = penalty_friction_force(pair, epsilon[k],
+                                                tools.friction_coefficient(pair.tool),
+                                                v0, dt, false);
+          s.tool_force[pair.tool] -= f.force;
+          ++s.n_active;
+          const double p    = -pair.predicted_gap;
+          s.max_penetration = std::max(s.max_penetration, p);
+          sum_penetration += p;
+          ++s.n_penetrating;
+        }
+      for (auto &f : s.tool_force)
+        f = Utilities::MPI::sum(f, comm);
+      s.max_penetration = Utilities::MPI::max(s.max_penetration, comm);
+      sum_penetration   = Utilities::MPI::sum(sum_penetration, comm);
+      s.n_active        = Utilities::MPI::sum(s.n_active, comm);
+      s.n_penetrating   = Utilities::MPI::sum(s.n_penetrating, comm);
+      s.mean_penetration =
+        s.n_penetrating > 0 ? sum_penetration / s.n_penetrating : 0.;
+      return s;
+    }
+
+    template class ContactPostprocessor<3>;
+  } // namespace contact
+} // namespace formsolve

@@ -1,0 +1,124 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/tria.h>
+
+#include <formsolve/geometry/blank_mesh.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+namespace formsolve
+{
+  namespace geometry
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      void read_planform(const std::string &file, Triangulation<2> &planform)
+      {
+        AssertThrow(std::ifstream(file).good(),
+                    ExcMessage("Geometry/Mesh file: cannot open '" + file + "'"));
+        std::string msh = file;
+        const auto  ext = std::filesystem::path(file).extension().string();
+        if (ext == ".geo")
+          {
+            // Mesh the geometry with the gmsh executable deal.II was built with.
+            msh = (std::filesystem::temp_directory_path() /
+                   ("formsolve-" + std::to_string(::getpid()) + ".msh"))
+                    .string();
+            const std::string cmd = std::string(DEAL_II_GMSH_EXECUTABLE_PATH) +
+                                    " -2 -format msh2 -v 0 '" + file + "' -o '" +
+                                    msh + "' > /dev/null 2>&1";
+            AssertThrow(std::system(cmd.c_str()) == 0 && std::ifstream(msh).good(),
+                        ExcMessage("Geometry/Mesh file: gmsh could not mesh '" +
+                                   file + "'"));
+          }
+        else
+          AssertThrow(ext == ".msh",
+                      ExcMessage("Geometry/Mesh file: '" + file +
+                                 "' is neither .msh nor .geo"));
+        GridIn<2> in(planform);
+        std::ifstream input(msh);
+        try
+          {
+            in.read_msh(input);
+          }
+        catch (const ExceptionBase &)
+          {
+            AssertThrow(false, ExcMessage("Geometry/Mesh file: '" + file +
+                                          "' is not a 2-D quadrilateral gmsh mesh"));
+          }
+        if (msh != file)
+          std::filesystem::remove(msh);
+      }
+
+      void create_planform(const parameters::Geometry &g, Triangulation<2> &t)
+      {
+        const double R = 0.5 * g.blank_diameter;
+        if (g.blank_shape == "disk")
+          GridGenerator::hyper_ball(t, Point<2>(), R);
+        else if (g.blank_shape == "quarter disk")
+          GridGenerator::quarter_hyper_ball(t, Point<2>(), R);
+        else if (g.blank_shape == "rectangle" || g.blank_shape == "quarter rectangle")
+          {
+            const bool   quarter = (g.blank_shape == "quarter rectangle");
+            const double lx = quarter ? 0.5 * g.blank_length : g.blank_length;
+            const double ly = quarter ? 0.5 * g.blank_width : g.blank_width;
+            const double h  = std::min(lx, ly);
+            const std::vector<unsigned int> reps = {
+              std::max(1u, static_cast<unsigned int>(std::round(lx / h))),
+              std::max(1u, static_cast<unsigned int>(std::round(ly / h)))};
+            const Point<2> lo = quarter ? Point<2>() : Point<2>(-lx / 2, -ly / 2);
+            GridGenerator::subdivided_hyper_rectangle(t, reps, lo,
+                                                      lo + Point<2>(lx, ly));
+          }
+        else
+          read_planform(g.mesh_file, t);
+      }
+    } // namespace
+
+    void create_blank_mesh(const parameters::Geometry &              g,
+                           const parameters::Mesh &                  m,
+                           parallel::distributed::Triangulation<3> &tria)
+    {
+      Triangulation<2> planform;
+      create_planform(g, planform);
+      planform.refine_global(m.refinements);
+
+      // Drop the manifolds: the refined planform becomes the coarse mesh, so
+      // that later refinement near tool radii stays inside the sheet.
+      Triangulation<2> flat;
+      GridGenerator::flatten_triangulation(planform, flat);
+
+      std::vector<double> z(m.layers + 1);
+      for (unsigned int k = 0; k <= m.layers; ++k)
+        z[k] = g.thickness * k / m.layers;
+      Triangulation<3> serial;
+      GridGenerator::extrude_triangulation(flat, z, serial);
+      const double tol = 1e-6 * g.thickness;
+      for (const auto &cell : serial.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              const Point<3> c = face->center();
+              types::boundary_id id = free_surface;
+              if (std::abs(c[2]) > tol && std::abs(c[2] - g.thickness) > tol)
+                {
+                  if (g.symmetric_in_x() && std::abs(c[0]) < tol)
+                    id = symmetry_x;
+                  else if (g.symmetric_in_y() && std::abs(c[1]) < tol)
+                    id = symmetry_y;
+                }
+              face->set_boundary_id(id);
+            }
+      tria.copy_triangulation(serial);
+    }
+  } // namespace geometry
+} // namespace formsolve

@@ -1,0 +1,117 @@
+#include <deal.II/base/exceptions.h>
+
+#include <formsolve/parameters/command_line.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    using dealii::ExcMessage;
+
+    std::string CommandLine::usage()
+    {
+      return "Usage: formsolve [options] case.prm\n"
+             "       mpirun -np N formsolve [options] case.prm\n\n"
+             "Options:\n"
+             "  --help                       this text\n"
+             "  --print-parameters           write the complete, documented default\n"
+             "                               parameter file to standard output\n"
+             "  --set \"Subsection/Entry=value\"\n"
+             "                               override one entry after reading the file\n"
+             "                               (repeatable; nested: Tools/Punch/Stroke=20)\n";
+    }
+
+    CommandLine CommandLine::parse(int argc, char **argv)
+    {
+      CommandLine cl;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string a = argv[i];
+          if (a == "--help" || a == "-h")
+            cl.help = true;
+          else if (a == "--print-parameters")
+            cl.print_parameters = true;
+          else if (a == "--set" || a.rfind("--set=", 0) == 0)
+            {
+              std::string s;
+              if (a == "--set")
+                {
+                  AssertThrow(i + 1 < argc,
+                              ExcMessage("--set needs an argument \"Subsection/Entry=value\""));
+                  s = argv[++i];
+                }
+              else
+                s = a.substr(6);
+              const auto eq = s.find('=');
+              AssertThrow(eq != std::string::npos && eq > 0,
+                          ExcMessage("--set \"" + s +
+                                     "\": expected \"Subsection/Entry=value\""));
+              cl.overrides.emplace_back(s.substr(0, eq), s.substr(eq + 1));
+            }
+          else if (a.size() > 1 && a[0] == '-')
+            {
+              AssertThrow(false, ExcMessage("unknown option " + a + "\n" + usage()));
+            }
+          else
+            {
+              AssertThrow(cl.input_file.empty(),
+                          ExcMessage("more than one input file given: " +
+                                     cl.input_file + " and " + a));
+              cl.input_file = a;
+            }
+        }
+      return cl;
+    }
+
+    void read_input(dealii::ParameterHandler &prm, const CommandLine &cl)
+    {
+      {
+        std::ifstream in(cl.input_file);
+        AssertThrow(in.good(),
+                    ExcMessage("cannot open input file " + cl.input_file));
+      }
+      try
+        {
+          prm.parse_input(cl.input_file, "", /*skip_undefined=*/false,
+                          /*assert_mandatory_entries_are_found=*/false);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          std::ostringstream s;
+          e.print_info(s);
+          AssertThrow(false, ExcMessage("in input file " + cl.input_file + ": " +
+                                        s.str()));
+        }
+
+      for (const auto &[path, value] : cl.overrides)
+        {
+          std::vector<std::string> parts;
+          std::string::size_type   start = 0, slash;
+          while ((slash = path.find('/', start)) != std::string::npos)
+            {
+              parts.push_back(path.substr(start, slash - start));
+              start = slash + 1;
+            }
+          const std::string entry = path.substr(start);
+          try
+            {
+              for (const auto &p : parts)
+                prm.enter_subsection(p);
+              prm.set(entry, value);
+              for (unsigned int k = 0; k < parts.size(); ++k)
+                prm.leave_subsection();
+            }
+          catch (const dealii::ExceptionBase &e)
+            {
+              std::ostringstream s;
+              e.print_info(s);
+              AssertThrow(false, ExcMessage("--set " + path + "=" + value + ": " +
+                                            s.str()));
+            }
+        }
+    }
+  } // namespace parameters
+} // namespace formsolve

@@ -1,0 +1,330 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <formsolve/geometry/blank_mesh.h>
+#include <formsolve/output/vtu_writer.h>
+#include <formsolve/simulation/history_file.h>
+#include <formsolve/simulation/simulation.h>
+
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace formsolve
+{
+  namespace simulation
+  {
+    using namespace dealii;
+
+    template <int dim>
+    Simulation<dim>::Simulation(const parameters::Run &run, const ParameterHandler &ph)
+      : prm(run)
+      , parameter_handler(ph)
+      , comm(MPI_COMM_WORLD)
+      , pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+      , tria(comm)
+      , fe(FE_Q<dim>(run.mesh.degree), dim)
+      , dof_handler(tria)
+      , reference_mapping(run.mesh.degree)
+      , material(run.material)
+      , assembler(material, run.mesh.degree)
+      , tools(run.tools, run.contact, run.geometry.thickness)
+      , contact_post(run.contact.search_distance, run.contact.regularisation_velocity)
+      , estimator(contact::create_penalty_estimator<dim>(run.contact))
+    {}
+
+    template <int dim>
+    void Simulation<dim>::setup_mesh_and_dofs()
+    {
+      TimerOutput::Scope t(timer, "setup");
+      geometry::create_blank_mesh(prm.geometry, prm.mesh, tria);
+      dof_handler.distribute_dofs(fe);
+      owned    = dof_handler.locally_owned_dofs();
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+
+      constraints.clear();
+      constraints.reinit(relevant);
+      DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+      // Symmetry planes: no velocity normal to the plane.
+      const Functions::ZeroFunction<dim> zero(dim);
+      if (prm.geometry.symmetric_in_x())
+        VectorTools::interpolate_boundary_values(reference_mapping, dof_handler,
+                                                 geometry::symmetry_x, zero, constraints,
+                                                 fe.component_mask(
+                                                   FEValuesExtractors::Scalar(0)));
+      if (prm.geometry.symmetric_in_y())
+        VectorTools::interpolate_boundary_values(reference_mapping, dof_handler,
+                                                 geometry::symmetry_y, zero, constraints,
+                                                 fe.component_mask(
+                                                   FEValuesExtractors::Scalar(1)));
+      constraints.close();
+
+      DynamicSparsityPattern dsp(relevant);
+      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+      SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+      matrix.reinit(owned, owned, dsp, comm);
+
+      residual.reinit(owned, comm);
+      velocity.reinit(owned, comm);
+      displacement.reinit(owned, comm);
+      contact_fields.reinit(owned, comm);
+      velocity_ghost.reinit(owned, relevant, comm);
+      displacement_ghost.reinit(owned, relevant, comm);
+      mapping = std::make_unique<MappingQEulerian<dim, VectorType>>(
+        prm.mesh.degree, dof_handler, displacement_ghost);
+
+      assembler.initialize_history(dof_handler, history);
+      contact_post.setup(dof_handler, reference_mapping, contact_set);
+
+      std::vector<std::vector<bool>> modes;
+      DoFTools::extract_constant_modes(dof_handler, ComponentMask(dim, true), modes);
+      linear_solver = std::make_unique<solver::LinearSolver>(prm.linear, modes);
+    }
+
+    template <int dim>
+    void Simulation<dim>::check_initial_scene()
+    {
+      contact_post.evaluate(tools, displacement_ghost, velocity_ghost, 0., contact_set);
+      const double tol = 1e-6 * prm.geometry.thickness;
+      for (unsigned int t = 0; t < tools.size(); ++t)
+        {
+          double worst = 0;
+          for (const auto &p : contact_set.pairs)
+            if (p.tool == t)
+              worst = std::max(worst, -p.gap);
+          worst = Utilities::MPI::max(worst, comm);
+          std::ostringstream s;
+          s << "Tools/" << tools[t].name() << ": the blank starts inside this tool ("
+            << worst << " mm deep); check its Gap, Diameter and Profile radius "
+            << "against Geometry";
+          AssertThrow(worst <= tol, ExcMessage(s.str()));
+        }
+    }
+
+    template <int dim>
+    void Simulation<dim>::prepare_output_directory()
+    {
+      const std::string &dir = prm.output.directory;
+      int                ok  = 1;
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          std::error_code ec;
+          std::filesystem::create_directories(dir, ec);
+          const std::string probe = dir + "/.formsolve-write-test";
+          ok = !ec && std::ofstream(probe).good();
+          std::filesystem::remove(probe, ec);
+          if (ok)
+            parameter_handler.print_parameters(dir + "/parameters.prm",
+                                               ParameterHandler::PRM);
+        }
+      ok = Utilities::MPI::min(ok, comm);
+      AssertThrow(ok, ExcMessage("Output/Output directory: cannot create or write '" +
+                                 dir + "'"));
+    }
+
+    template <int dim>
+    double Simulation<dim>::assemble(const VectorType &v, const bool newton)
+    {
+      velocity_ghost = v;
+      {
+        TimerOutput::Scope t(timer, "contact");
+        contact_post.evaluate(tools, displacement_ghost, velocity_ghost, dt, contact_set);
+        estimator->estimate(contact_set, tools, epsilon);
+      }
+      TimerOutput::Scope            t(timer, "assembly");
+      solver::ContactInput<dim>     contact{&contact_set, &epsilon, &tools,
+                                        prm.contact.regularisation_velocity};
+      f_scale = assembler.assemble(dof_handler, *mapping, constraints, velocity_ghost,
+                                   history, dt, contact, newton, &matrix, residual);
+      return residual.l2_norm();
+    }
+
+    template <int dim>
+    unsigned int Simulation<dim>::solve(VectorType &dv)
+    {
+      TimerOutput::Scope t(timer, "linear solve");
+      VectorType         rhs(residual);
+      rhs *= -1.;
+      const unsigned int its = linear_solver->solve(matrix, dv, rhs);
+      constraints.distribute(dv);
+      return its;
+    }
+
+    template <int dim>
+    bool Simulation<dim>::contact_set_changed()
+    {
+      std::vector<bool> active(contact_set.pairs.size());
+      for (unsigned int k = 0; k < active.size(); ++k)
+        active[k] = contact_set.pairs[k].active;
+      const int changed = (active != last_active);
+      last_active       = active;
+      return Utilities::MPI::max(changed, comm) != 0;
+    }
+
+    template <int dim>
+    void Simulation<dim>::fill_contact_fields()
+    {
+      // Component 0: smallest predicted gap (capped at the search distance),
+      // 1: contact pressure, 2: penalty factor of the active pairs.
+      contact_fields = 0;
+      for (const auto &node : contact_set.nodes)
+        contact_fields[node.dofs[0]] = prm.contact.search_distance;
+      for (unsigned int k = 0; k < contact_set.pairs.size(); ++k)
+        {
+          const auto &p    = contact_set.pairs[k];
+          const auto &node = contact_set.nodes[p.node];
+          contact_fields[node.dofs[0]] =
+            std::min<double>(contact_fields[node.dofs[0]], p.predicted_gap);
+          if (p.active)
+            {
+              contact_fields[node.dofs[1]] +=
+                -epsilon[k] * p.predicted_gap / std::max(node.area, 1e-300);
+              contact_fields[node.dofs[2]] += epsilon[k];
+            }
+        }
+      contact_fields.compress(VectorOperation::insert);
+    }
+
+    template <int dim>
+    RunSummary Simulation<dim>::run()
+    {
+      using Clock      = std::chrono::steady_clock;
+      const auto start = Clock::now();
+      auto seconds = [&]() {
+        return std::chrono::duration<double>(Clock::now() - start).count();
+      };
+
+      setup_mesh_and_dofs();
+      check_initial_scene();
+      prepare_output_directory();
+
+      const double sym = prm.geometry.symmetry_factor();
+      pcout << "formsolve: " << Utilities::MPI::n_mpi_processes(comm) << " rank(s), "
+            << tria.n_global_active_cells() << " cells, " << dof_handler.n_dofs()
+            << " DoFs (Q" << prm.mesh.degree << ", " << prm.mesh.layers
+            << " layers), forces scaled by " << sym << " to the full part\n";
+
+      std::vector<std::string> columns = {"step", "time", "punch_travel", "punch_force",
+                                          "max_penetration", "newton_iterations",
+                                          "linear_iterations", "wall_time"};
+      for (unsigned int t = 0; t < tools.size(); ++t)
+        columns.push_back(tools.key(t) + "_force");
+      columns.insert(columns.end(), {"volume", "mean_penetration", "active_contacts",
+                                     "picard_iterations"});
+      HistoryFile history_file(prm.output.directory + "/history.csv", columns,
+                               Utilities::MPI::this_mpi_process(comm) == 0);
+      output::VtuWriter<dim> writer(prm.output.directory);
+      auto write = [&](const unsigned int step, const double time) {
+        TimerOutput::Scope t(timer, "output");
+        velocity_ghost = velocity;
+        fill_contact_fields();
+        VectorType contact_ghost(owned, relevant, comm);
+        contact_ghost = contact_fields;
+        output::OutputFields<dim> f{&velocity_ghost, &displacement_ghost,
+                                    &contact_ghost, &history};
+        writer.write(step, time, dof_handler, *mapping, f);
+      };
+      if (prm.output.interval > 0)
+        write(0, 0.);
+
+      const solver::NewtonSolver newton(prm.nonlinear,
+                                        ConditionalOStream(std::cout, false));
+      RunSummary   summary;
+      summary.n_dofs = dof_handler.n_dofs();
+      double       time = 0;
+      unsigned int step = 0;
+      const double stroke = tools.punch_stroke(), speed = tools.punch_speed();
+      while (tools.punch_travel() < stroke * (1 - 1e-12))
+        {
+          ++step;
+          dt = std::min(prm.time.time_step, (stroke - tools.punch_travel()) / speed);
+          {
+            TimerOutput::Scope t(timer, "contact");
+            contact_post.update_areas(dof_handler, *mapping, contact_set);
+          }
+          constraints.distribute(velocity); // previous step's velocity: predictor
+          const double newton_start = seconds();
+          const auto   report       = newton.solve(*this, velocity);
+          summary.newton_wall_time += seconds() - newton_start;
+          if (!report.converged)
+            {
+              std::ostringstream s;
+              s << "step " << step << " (punch travel " << tools.punch_travel()
+                << " mm): " << report.failure << " after " << report.iterations
+                << " iterations (|r|/|f| = " << report.residual
+                << "); results up to the previous step are in "
+                << prm.output.directory;
+              AssertThrow(false, ExcMessage(s.str()));
+            }
+
+          // The state at the converged velocity (contact_set and epsilon are
+          // those of the last assembly, i.e. of this velocity).
+          const auto stats =
+            contact_post.statistics(tools, contact_set, epsilon, dt, comm);
+          velocity_ghost = velocity;
+          {
+            TimerOutput::Scope t(timer, "state update");
+            assembler.update_history(dof_handler, *mapping, velocity_ghost, dt, history);
+            displacement.add(dt, velocity);
+            displacement_ghost = displacement;
+            tools.advance(dt);
+            time += dt;
+          }
+          const double volume = assembler.volume(dof_handler, *mapping);
+
+          summary.steps = step;
+          summary.newton_iterations += report.iterations;
+          summary.linear_iterations += report.linear_iterations;
+          const double wall   = seconds();
+          const double travel = tools.punch_travel();
+          // Axial (z) forces of the sheet on the tools, full part, pressing = +.
+          const double punch_force = sym * stats.tool_force[0][dim - 1];
+          std::vector<double> row = {double(step), time, travel, punch_force,
+                                     stats.max_penetration, double(report.iterations),
+                                     double(report.linear_iterations),
+                                     prm.output.wall_time_in_history ? wall : 0.};
+          for (unsigned int t = 0; t < tools.size(); ++t)
+            row.push_back(sym * std::abs(stats.tool_force[t][dim - 1]));
+          row.insert(row.end(), {sym * volume, stats.mean_penetration,
+                                 double(stats.n_active), double(report.picard_iterations)});
+          history_file.write_row(row);
+
+          const double left = wall / travel * (stroke - travel);
+          pcout << "step " << std::setw(4) << step << "  t=" << std::fixed
+                << std::setprecision(3) << time << " s  travel=" << travel
+                << " mm  F=" << std::setprecision(2) << punch_force / 1000.
+                << " kN  newton=" << std::setw(2) << report.iterations
+                << "  pen=" << std::scientific << std::setprecision(2)
+                << stats.max_penetration << " mm  wall=" << std::fixed
+                << std::setprecision(1) << wall << " s  left~" << left << " s"
+                << std::defaultfloat << std::endl;
+
+          const bool last = tools.punch_travel() >= stroke * (1 - 1e-12);
+          if (prm.output.interval > 0 && (step % prm.output.interval == 0 || last))
+            write(step, time);
+        }
+
+      summary.wall_time      = seconds();
+      {
+        Utilities::System::MemoryStats m;
+        Utilities::System::get_memory_stats(m);
+        summary.peak_memory_kb = Utilities::MPI::max(double(m.VmHWM), comm);
+      }
+      pcout << "done: " << step << " steps, " << summary.newton_iterations
+            << " Newton iterations, " << summary.linear_iterations
+            << " linear iterations, " << summary.wall_time << " s; results in "
+            << prm.output.directory << std::endl;
+      timer.print_summary();
+      return summary;
+    }
+
+    template class Simulation<3>;
+  } // namespace simulation
+} // namespace formsolve

@@ -1,0 +1,59 @@
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <formsolve/solver/linear_solver.h>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    using namespace dealii;
+
+    LinearSolver::LinearSolver(const parameters::LinearSolver &     p,
+                               const std::vector<std::vector<bool>> &modes)
+      : prm(p)
+      , constant_modes(modes)
+    {}
+
+    unsigned int LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
+                                     TrilinosWrappers::MPI::Vector &       x,
+                                     const TrilinosWrappers::MPI::Vector & b) const
+    {
+      if (prm.type == "direct")
+        {
+          SolverControl control(1, 0);
+          TrilinosWrappers::SolverDirect::AdditionalData data(
+            false, prm.direct_solver == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
+          TrilinosWrappers::SolverDirect direct(control, data);
+          direct.solve(A, x, b);
+          return 1;
+        }
+
+      TrilinosWrappers::PreconditionAMG                 amg;
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic              = true;
+      data.higher_order_elements = false;
+      data.smoother_sweeps       = 2;
+      data.aggregation_threshold = 0.02;
+      data.constant_modes        = constant_modes;
+      amg.initialize(A, data);
+
+      SolverControl control(prm.max_iterations, prm.tolerance * b.l2_norm());
+      if (prm.iterative_solver == "CG")
+        {
+          SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+          cg.solve(A, x, b, amg);
+        }
+      else
+        {
+          SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+            control, SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(100));
+          gmres.solve(A, x, b, amg);
+        }
+      return control.last_step();
+    }
+  } // namespace solver
+} // namespace formsolve

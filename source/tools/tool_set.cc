@@ -1,0 +1,71 @@
+#include <formsolve/tools/profile_tool.h>
+#include <formsolve/tools/tool_set.h>
+
+namespace formsolve
+{
+  namespace tools
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      template <int dim>
+      Planform<dim> planform_of(const parameters::Tool &t)
+      {
+        Planform<dim> p;
+        if (t.shape == "round")
+          {
+            p.kind   = Planform<dim>::Kind::circle;
+            p.radius = 0.5 * t.diameter;
+          }
+        else if (t.shape == "rounded rectangle")
+          {
+            p.kind          = Planform<dim>::Kind::rounded_rectangle;
+            p.half_length   = 0.5 * t.length;
+            p.half_width    = 0.5 * t.width;
+            p.corner_radius = t.corner_radius;
+          }
+        else
+          p.kind = Planform<dim>::Kind::unbounded;
+        return p;
+      }
+    } // namespace
+
+    template <int dim>
+    ToolSet<dim>::ToolSet(const parameters::Tools &  p,
+                          const parameters::Contact &c,
+                          const double               thickness)
+      : stroke(p.punch.stroke)
+      , speed(p.punch.speed)
+    {
+      auto add = [&](const parameters::Tool &t, const std::string &key,
+                     const int sa, const int sb, const double z,
+                     const Tensor<1, dim> &v) {
+        if (!t.enabled)
+          return;
+        tools.push_back(std::make_unique<ProfileTool<dim>>(
+          t.name, planform_of<dim>(t), sa, sb, z, t.profile_radius, v));
+        friction.push_back(t.friction_coefficient);
+        penalty.push_back(t.penalty_factor > 0 ? t.penalty_factor : c.penalty_factor);
+        keys.push_back(key);
+      };
+      Tensor<1, dim> down;
+      down[dim - 1] = -p.punch.speed;
+      // The punch comes first: punch_index() relies on it.
+      add(p.punch, "punch", -1, +1, thickness + p.punch.gap, down);
+      add(p.die, "die", +1, -1, -p.die.gap, Tensor<1, dim>());
+      add(p.blank_holder, "blank_holder", +1, +1, thickness + p.blank_holder.gap,
+          Tensor<1, dim>());
+    }
+
+    template <int dim>
+    void ToolSet<dim>::advance(const double dt)
+    {
+      for (auto &t : tools)
+        t->advance(dt);
+    }
+
+    template class ToolSet<2>;
+    template class ToolSet<3>;
+  } // namespace tools
+} // namespace formsolve
