@@ -47,14 +47,12 @@ int main(int argc, char **argv)
         {
           std::ostringstream s;
           e.print_info(s);
-          std::string msg = s.str();
-          const std::string prefix = "    ";
-          // ExcMessage's info is indented; print it as one clean line.
-          while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' '))
-            msg.pop_back();
-          const auto first = msg.find_first_not_of(" \n");
-          std::cerr << "formsolve: error: "
-                    << (first == std::string::npos ? msg : msg.substr(first)) << std::endl;
+          // One line: deal.II's messages are indented and spread over lines.
+          std::istringstream words(s.str());
+          std::string        msg, word;
+          while (words >> word)
+            msg += (msg.empty() ? "" : " ") + word;
+          std::cerr << "formsolve: error: " << msg << std::endl;
         }
       return 1;
     }

@@ -30,8 +30,8 @@ namespace formsolve
         return out;
 
       // Tangential slip velocity; n is fixed within a step (start geometry).
-      const Tensor<1, dim> vt = pair.relative_velocity -
-                                (pair.relative_velocity * n) * n;
+      const Tensor<1, dim> vt =
+        pair.relative_velocity - (pair.relative_velocity * n) * n;
       const double s = vt.norm(), x = s / v0;
       // h(s) = (2/pi) atan(s/v0)/s and h'(s)/s, by series near s = 0.
       double h, dh_over_s;
@@ -43,7 +43,9 @@ namespace formsolve
       else
         {
           h         = 2. / M_PI * std::atan(x) / s;
-          dh_over_s = 2. / M_PI * (1. / (v0 * (1. + x * x)) / s - std::atan(x) / (s * s)) / s;
+          dh_over_s = 2. / M_PI *
+                      (1. / (v0 * (1. + x * x)) / s - std::atan(x) / (s * s)) /
+                      s;
         }
       Tensor<2, dim> Pt = unit_symmetric_tensor<dim>();
       Pt -= outer_product(n, n);
@@ -51,15 +53,24 @@ namespace formsolve
       out.stiffness += mu * out.normal_force * h * Pt;
       if (newton)
         {
-          out.stiffness += mu * out.normal_force * dh_over_s * outer_product(vt, vt);
+          out.stiffness +=
+            mu * out.normal_force * dh_over_s * outer_product(vt, vt);
           out.stiffness -= mu * h * epsilon * dt * outer_product(vt, n);
         }
       return out;
     }
 
-    template NodalContactForce<2> penalty_friction_force(const ContactPair<2> &, double,
-                                                         double, double, double, bool);
-    template NodalContactForce<3> penalty_friction_force(const ContactPair<3> &, double,
-                                                         double, double, double, bool);
+    template NodalContactForce<2> penalty_friction_force(const ContactPair<2> &,
+                                                         double,
+                                                         double,
+                                                         double,
+                                                         double,
+                                                         bool);
+    template NodalContactForce<3> penalty_friction_force(const ContactPair<3> &,
+                                                         double,
+                                                         double,
+                                                         double,
+                                                         double,
+                                                         bool);
   } // namespace contact
 } // namespace formsolve

@@ -16,23 +16,26 @@ namespace formsolve
     using namespace dealii;
 
     template <int dim>
-    ContactPostprocessor<dim>::ContactPostprocessor(const double search_distance,
-                                                    const double v0)
-      : search_distance(search_distance)
-      , v0(v0)
+    ContactPostprocessor<dim>::ContactPostprocessor(
+      const double search_distance,
+      const double v0)
+        : search_distance(search_distance)
+        , v0(v0)
     {}
 
     template <int dim>
     void ContactPostprocessor<dim>::setup(const DoFHandler<dim> &dof_handler,
-                                          const Mapping<dim> &   reference_mapping,
-                                          ContactSet<dim> &      set) const
+                                          const Mapping<dim> &reference_mapping,
+                                          ContactSet<dim>    &set) const
     {
       set.nodes.clear();
       set.pairs.clear();
       const auto &fe    = dof_handler.get_fe();
       const auto  owned = dof_handler.locally_owned_dofs();
       std::map<types::global_dof_index, Point<dim>> support;
-      DoFTools::map_dofs_to_support_points(reference_mapping, dof_handler, support);
+      DoFTools::map_dofs_to_support_points(reference_mapping,
+                                           dof_handler,
+                                           support);
 
       std::unordered_map<types::global_dof_index, unsigned int> seen;
       std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
@@ -44,7 +47,8 @@ namespace formsolve
               {
                 cell->face(f)->get_dof_indices(face_dofs);
                 // Group the face DoFs by support point (base shape function).
-                std::map<unsigned int, std::array<types::global_dof_index, dim>> by_point;
+                std::map<unsigned int, std::array<types::global_dof_index, dim>>
+                  by_point;
                 for (unsigned int i = 0; i < face_dofs.size(); ++i)
                   {
                     const auto ci = fe.face_system_to_component_index(i);
@@ -63,16 +67,20 @@ namespace formsolve
     }
 
     template <int dim>
-    void ContactPostprocessor<dim>::update_areas(const DoFHandler<dim> &dof_handler,
-                                                 const Mapping<dim> &   mapping,
-                                                 ContactSet<dim> &      set) const
+    void
+    ContactPostprocessor<dim>::update_areas(const DoFHandler<dim> &dof_handler,
+                                            const Mapping<dim>    &mapping,
+                                            ContactSet<dim>       &set) const
     {
-      const auto &fe = dof_handler.get_fe();
-      VectorType  area(dof_handler.locally_owned_dofs(),
+      const auto           &fe = dof_handler.get_fe();
+      VectorType            area(dof_handler.locally_owned_dofs(),
                       dof_handler.get_triangulation().get_communicator());
       const QGauss<dim - 1> quadrature(fe.degree + 1);
-      FEFaceValues<dim>     fe_face(mapping, fe, quadrature,
-                                update_values | update_JxW_values);
+      FEFaceValues<dim>     fe_face(mapping,
+                                fe,
+                                quadrature,
+                                update_values | update_JxW_values |
+                                  update_normal_vectors);
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       Vector<double>                       local(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -84,29 +92,33 @@ namespace formsolve
                 fe_face.reinit(cell, f);
                 local = 0;
                 for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                  if (fe.system_to_component_index(i).first == 0)
+                  {
+                    const unsigned int c =
+                      fe.system_to_component_index(i).first;
                     for (unsigned int q = 0; q < quadrature.size(); ++q)
-                      local[i] += fe_face.shape_value_component(i, q, 0) *
-                                  fe_face.JxW(q);
+                      local[i] += fe_face.shape_value_component(i, q, c) *
+                                  fe_face.normal_vector(q)[c] * fe_face.JxW(q);
+                  }
                 cell->get_dof_indices(dofs);
                 area.add(dofs, local);
               }
       area.compress(VectorOperation::add);
       for (auto &node : set.nodes)
-        node.area = area[node.dofs[0]];
+        for (unsigned int d = 0; d < dim; ++d)
+          node.area_vector[d] = area[node.dofs[d]];
     }
 
     template <int dim>
     void ContactPostprocessor<dim>::evaluate(const tools::ToolSet<dim> &tools,
-                                             const VectorType &         u,
-                                             const VectorType &         v,
+                                             const VectorType          &u,
+                                             const VectorType          &v,
                                              const double               dt,
-                                             ContactSet<dim> &          set) const
+                                             ContactSet<dim> &set) const
     {
       set.pairs.clear();
       for (unsigned int k = 0; k < set.nodes.size(); ++k)
         {
-          const auto &   node = set.nodes[k];
+          const auto    &node = set.nodes[k];
           Point<dim>     x    = node.reference_position;
           Tensor<1, dim> vel;
           for (unsigned int d = 0; d < dim; ++d)
@@ -123,8 +135,10 @@ namespace formsolve
               pair.node              = k;
               pair.tool              = t;
               pair.relative_velocity = vel - tools[t].velocity();
-              pair.predicted_gap     = pair.gap + (pair.normal * pair.relative_velocity) * dt;
-              pair.active            = pair.predicted_gap < 0;
+              pair.predicted_gap =
+                pair.gap + (pair.normal * pair.relative_velocity) * dt;
+              pair.area   = std::max(0., -(pair.normal * node.area_vector));
+              pair.active = pair.predicted_gap < 0 && pair.area > 0;
               set.pairs.push_back(pair);
             }
         }
@@ -133,7 +147,7 @@ namespace formsolve
     template <int dim>
     ContactStatistics<dim>
     ContactPostprocessor<dim>::statistics(const tools::ToolSet<dim> &tools,
-                                          const ContactSet<dim> &    set,
+                                          const ContactSet<dim>     &set,
                                           const std::vector<double> &epsilon,
                                           const double               dt,
                                           const MPI_Comm             comm) const
@@ -146,9 +160,13 @@ namespace formsolve
           const auto &pair = set.pairs[k];
           if (!pair.active)
             continue;
-          const auto f = penalty_friction_force(pair, epsilon[k],
-                                                tools.friction_coefficient(pair.tool),
-                                                v0, dt, false);
+          const auto f =
+            penalty_friction_force(pair,
+                                   epsilon[k],
+                                   tools.friction_coefficient(pair.tool),
+                                   v0,
+                                   dt,
+                                   false);
           s.tool_force[pair.tool] -= f.force;
           ++s.n_active;
           const double p    = -pair.predicted_gap;

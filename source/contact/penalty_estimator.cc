@@ -7,14 +7,14 @@ namespace formsolve
   namespace contact
   {
     template <int dim>
-    void FixedPenalty<dim>::estimate(const ContactSet<dim> &    set,
+    void FixedPenalty<dim>::estimate(const ContactSet<dim>     &set,
                                      const tools::ToolSet<dim> &tools,
-                                     std::vector<double> &      epsilon)
+                                     std::vector<double>       &epsilon)
     {
       epsilon.resize(set.pairs.size());
       for (unsigned int k = 0; k < set.pairs.size(); ++k)
-        epsilon[k] = tools.penalty_factor(set.pairs[k].tool) *
-                     set.nodes[set.pairs[k].node].area;
+        epsilon[k] =
+          tools.penalty_factor(set.pairs[k].tool) * set.pairs[k].area;
     }
 
     template <int dim>
@@ -23,7 +23,8 @@ namespace formsolve
     {
       AssertThrow(p.penalty_strategy == "fixed",
                   dealii::ExcMessage("Contact/Penalty strategy: '" +
-                                     p.penalty_strategy + "' is not available"));
+                                     p.penalty_strategy +
+                                     "' is not available"));
       return std::make_unique<FixedPenalty<dim>>();
     }
 

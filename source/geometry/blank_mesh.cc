@@ -6,12 +6,12 @@
 
 #include <formsolve/geometry/blank_mesh.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-
-#include <unistd.h>
 
 namespace formsolve
 {
@@ -24,19 +24,22 @@ namespace formsolve
       void read_planform(const std::string &file, Triangulation<2> &planform)
       {
         AssertThrow(std::ifstream(file).good(),
-                    ExcMessage("Geometry/Mesh file: cannot open '" + file + "'"));
+                    ExcMessage("Geometry/Mesh file: cannot open '" + file +
+                               "'"));
         std::string msh = file;
         const auto  ext = std::filesystem::path(file).extension().string();
         if (ext == ".geo")
           {
-            // Mesh the geometry with the gmsh executable deal.II was built with.
+            // Mesh the geometry with the gmsh executable deal.II was built
+            // with.
             msh = (std::filesystem::temp_directory_path() /
                    ("formsolve-" + std::to_string(::getpid()) + ".msh"))
                     .string();
             const std::string cmd = std::string(DEAL_II_GMSH_EXECUTABLE_PATH) +
-                                    " -2 -format msh2 -v 0 '" + file + "' -o '" +
-                                    msh + "' > /dev/null 2>&1";
-            AssertThrow(std::system(cmd.c_str()) == 0 && std::ifstream(msh).good(),
+                                    " -2 -format msh2 -v 0 '" + file +
+                                    "' -o '" + msh + "' > /dev/null 2>&1";
+            AssertThrow(std::system(cmd.c_str()) == 0 &&
+                          std::ifstream(msh).good(),
                         ExcMessage("Geometry/Mesh file: gmsh could not mesh '" +
                                    file + "'"));
           }
@@ -44,7 +47,7 @@ namespace formsolve
           AssertThrow(ext == ".msh",
                       ExcMessage("Geometry/Mesh file: '" + file +
                                  "' is neither .msh nor .geo"));
-        GridIn<2> in(planform);
+        GridIn<2>     in(planform);
         std::ifstream input(msh);
         try
           {
@@ -52,8 +55,9 @@ namespace formsolve
           }
         catch (const ExceptionBase &)
           {
-            AssertThrow(false, ExcMessage("Geometry/Mesh file: '" + file +
-                                          "' is not a 2-D quadrilateral gmsh mesh"));
+            AssertThrow(false,
+                        ExcMessage("Geometry/Mesh file: '" + file +
+                                   "' is not a 2-D quadrilateral gmsh mesh"));
           }
         if (msh != file)
           std::filesystem::remove(msh);
@@ -66,7 +70,8 @@ namespace formsolve
           GridGenerator::hyper_ball(t, Point<2>(), R);
         else if (g.blank_shape == "quarter disk")
           GridGenerator::quarter_hyper_ball(t, Point<2>(), R);
-        else if (g.blank_shape == "rectangle" || g.blank_shape == "quarter rectangle")
+        else if (g.blank_shape == "rectangle" ||
+                 g.blank_shape == "quarter rectangle")
           {
             const bool   quarter = (g.blank_shape == "quarter rectangle");
             const double lx = quarter ? 0.5 * g.blank_length : g.blank_length;
@@ -75,8 +80,11 @@ namespace formsolve
             const std::vector<unsigned int> reps = {
               std::max(1u, static_cast<unsigned int>(std::round(lx / h))),
               std::max(1u, static_cast<unsigned int>(std::round(ly / h)))};
-            const Point<2> lo = quarter ? Point<2>() : Point<2>(-lx / 2, -ly / 2);
-            GridGenerator::subdivided_hyper_rectangle(t, reps, lo,
+            const Point<2> lo =
+              quarter ? Point<2>() : Point<2>(-lx / 2, -ly / 2);
+            GridGenerator::subdivided_hyper_rectangle(t,
+                                                      reps,
+                                                      lo,
                                                       lo + Point<2>(lx, ly));
           }
         else
@@ -84,8 +92,8 @@ namespace formsolve
       }
     } // namespace
 
-    void create_blank_mesh(const parameters::Geometry &              g,
-                           const parameters::Mesh &                  m,
+    void create_blank_mesh(const parameters::Geometry              &g,
+                           const parameters::Mesh                  &m,
                            parallel::distributed::Triangulation<3> &tria)
     {
       Triangulation<2> planform;
@@ -107,7 +115,7 @@ namespace formsolve
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary())
             {
-              const Point<3> c = face->center();
+              const Point<3>     c  = face->center();
               types::boundary_id id = free_surface;
               if (std::abs(c[2]) > tol && std::abs(c[2] - g.thickness) > tol)
                 {

@@ -7,11 +7,11 @@ namespace formsolve
   namespace material
   {
     FlowStress::FlowStress(const parameters::Material &p)
-      : K(p.strength_coefficient)
-      , n(p.hardening_exponent)
-      , eps0(p.prestrain)
-      , m(p.rate_sensitivity)
-      , rate0(p.reference_strain_rate)
+        : K(p.strength_coefficient)
+        , n(p.hardening_exponent)
+        , eps0(p.prestrain)
+        , m(p.rate_sensitivity)
+        , rate0(p.reference_strain_rate)
     {}
 
     double FlowStress::value(const double strain, const double rate) const

@@ -10,15 +10,17 @@ namespace formsolve
 
     template <int dim>
     RigidViscoplastic<dim>::RigidViscoplastic(const parameters::Material &p)
-      : law(p)
-      , cutoff(p.limiting_strain_rate)
-      , bulk(p.volumetric_penalty * p.strength_coefficient / p.reference_strain_rate)
+        : law(p)
+        , cutoff(p.limiting_strain_rate)
+        , bulk(p.volumetric_penalty * p.strength_coefficient /
+               p.reference_strain_rate)
     {}
 
     template <int dim>
     PointResponse<dim>
     RigidViscoplastic<dim>::evaluate(const SymmetricTensor<2, dim> &D,
-                                     const double strain_old, const double dt,
+                                     const double                   strain_old,
+                                     const double                   dt,
                                      const bool newton) const
     {
       PointResponse<dim>            out;
@@ -30,18 +32,20 @@ namespace formsolve
         {
           // Rigid zone: linear viscous with the viscosity frozen at the cutoff,
           // continuous with the plastic branch at rate == cutoff.
-          const double s = law.value(strain_old + dt * cutoff, cutoff);
-          out.viscosity  = s / (3. * cutoff);
-          out.flow_stress = s * rate / cutoff;
+          const double s        = law.value(strain_old + dt * cutoff, cutoff);
+          out.viscosity         = s / (3. * cutoff);
+          out.flow_stress       = s * rate / cutoff;
           out.deviatoric_stress = 2. * out.viscosity * e;
-          out.tangent = 2. * out.viscosity * deviator_tensor<dim>();
+          out.tangent           = 2. * out.viscosity * deviator_tensor<dim>();
           return out;
         }
 
       const double strain = strain_old + dt * rate;
       const double s      = law.value(strain, rate);
-      // ds/drate along the implicit path: hardening through eps = eps_n + dt*rate.
-      const double ds = dt * law.d_strain(strain, rate) + law.d_rate(strain, rate);
+      // ds/drate along the implicit path: hardening through eps = eps_n +
+      // dt*rate.
+      const double ds =
+        dt * law.d_strain(strain, rate) + law.d_rate(strain, rate);
 
       out.flow_stress       = s;
       out.viscosity         = s / (3. * rate);

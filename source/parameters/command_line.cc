@@ -17,11 +17,15 @@ namespace formsolve
              "       mpirun -np N formsolve [options] case.prm\n\n"
              "Options:\n"
              "  --help                       this text\n"
-             "  --print-parameters           write the complete, documented default\n"
-             "                               parameter file to standard output\n"
+             "  --print-parameters           write the complete, documented "
+             "default\n"
+             "                               parameter file to standard "
+             "output\n"
              "  --set \"Subsection/Entry=value\"\n"
-             "                               override one entry after reading the file\n"
-             "                               (repeatable; nested: Tools/Punch/Stroke=20)\n";
+             "                               override one entry after reading "
+             "the file\n"
+             "                               (repeatable; nested: "
+             "Tools/Punch/Stroke=20)\n";
     }
 
     CommandLine CommandLine::parse(int argc, char **argv)
@@ -39,21 +43,25 @@ namespace formsolve
               std::string s;
               if (a == "--set")
                 {
-                  AssertThrow(i + 1 < argc,
-                              ExcMessage("--set needs an argument \"Subsection/Entry=value\""));
+                  AssertThrow(
+                    i + 1 < argc,
+                    ExcMessage(
+                      "--set needs an argument \"Subsection/Entry=value\""));
                   s = argv[++i];
                 }
               else
                 s = a.substr(6);
               const auto eq = s.find('=');
               AssertThrow(eq != std::string::npos && eq > 0,
-                          ExcMessage("--set \"" + s +
-                                     "\": expected \"Subsection/Entry=value\""));
+                          ExcMessage(
+                            "--set \"" + s +
+                            "\": expected \"Subsection/Entry=value\""));
               cl.overrides.emplace_back(s.substr(0, eq), s.substr(eq + 1));
             }
           else if (a.size() > 1 && a[0] == '-')
             {
-              AssertThrow(false, ExcMessage("unknown option " + a + "\n" + usage()));
+              AssertThrow(false,
+                          ExcMessage("unknown option " + a + "\n" + usage()));
             }
           else
             {
@@ -75,15 +83,18 @@ namespace formsolve
       }
       try
         {
-          prm.parse_input(cl.input_file, "", /*skip_undefined=*/false,
+          prm.parse_input(cl.input_file,
+                          "",
+                          /*skip_undefined=*/false,
                           /*assert_mandatory_entries_are_found=*/false);
         }
       catch (const dealii::ExceptionBase &e)
         {
           std::ostringstream s;
           e.print_info(s);
-          AssertThrow(false, ExcMessage("in input file " + cl.input_file + ": " +
-                                        s.str()));
+          AssertThrow(false,
+                      ExcMessage("in input file " + cl.input_file + ": " +
+                                 s.str()));
         }
 
       for (const auto &[path, value] : cl.overrides)
@@ -108,8 +119,9 @@ namespace formsolve
             {
               std::ostringstream s;
               e.print_info(s);
-              AssertThrow(false, ExcMessage("--set " + path + "=" + value + ": " +
-                                            s.str()));
+              AssertThrow(false,
+                          ExcMessage("--set " + path + "=" + value + ": " +
+                                     s.str()));
             }
         }
     }

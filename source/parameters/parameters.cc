@@ -9,16 +9,17 @@ namespace formsolve
   namespace parameters
   {
     using dealii::ExcMessage;
+    using dealii::Patterns::Anything;
     using dealii::Patterns::Bool;
     using dealii::Patterns::Double;
     using dealii::Patterns::Integer;
     using dealii::Patterns::Selection;
-    using dealii::Patterns::Anything;
 
     namespace
     {
       // User errors name the entry as "Subsection/Entry".
-      void require(const bool condition, const std::string &entry,
+      void require(const bool         condition,
+                   const std::string &entry,
                    const std::string &what)
       {
         AssertThrow(condition, ExcMessage("Parameter " + entry + ": " + what));
@@ -36,29 +37,46 @@ namespace formsolve
     void Geometry::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Geometry");
-      prm.declare_entry("Blank shape", "quarter disk",
-                        Selection("disk|quarter disk|rectangle|quarter rectangle|gmsh"),
-                        "Planform of the blank. Quarter shapes are modelled with the "
-                        "symmetry planes x = 0 and y = 0; 'gmsh' reads the planform "
-                        "from 'Mesh file'. The sheet occupies 0 <= z <= Thickness.");
-      prm.declare_entry("Blank diameter", "77", Double(0),
+      prm.declare_entry(
+        "Blank shape",
+        "quarter disk",
+        Selection("disk|quarter disk|rectangle|quarter rectangle|gmsh"),
+        "Planform of the blank. Quarter shapes are modelled with the "
+        "symmetry planes x = 0 and y = 0; 'gmsh' reads the planform "
+        "from 'Mesh file'. The sheet occupies 0 <= z <= Thickness.");
+      prm.declare_entry("Blank diameter",
+                        "77",
+                        Double(0),
                         "Blank diameter for disk shapes (mm).");
-      prm.declare_entry("Blank length", "40", Double(0),
-                        "Full blank length along x for rectangles (mm); the quarter "
-                        "model covers 0 <= x <= length/2.");
-      prm.declare_entry("Blank width", "40", Double(0),
+      prm.declare_entry(
+        "Blank length",
+        "40",
+        Double(0),
+        "Full blank length along x for rectangles (mm); the quarter "
+        "model covers 0 <= x <= length/2.");
+      prm.declare_entry("Blank width",
+                        "40",
+                        Double(0),
                         "Full blank width along y for rectangles (mm).");
-      prm.declare_entry("Thickness", "0.78", Double(),
+      prm.declare_entry("Thickness",
+                        "0.78",
+                        Double(),
                         "Initial sheet thickness t0 (mm).");
-      prm.declare_entry("Mesh file", "", Anything(),
-                        "For 'gmsh': a 2-D quadrilateral planform mesh (.msh) or a gmsh "
-                        "geometry (.geo, meshed on reading with recombined quads); it is "
-                        "extruded through the thickness. Relative paths are taken from "
-                        "the working directory.");
-      prm.declare_entry("Symmetry planes", "xy", Selection("none|x|y|xy"),
-                        "Symmetry planes of a 'gmsh' blank: x means the plane x = 0 "
-                        "(no normal velocity), y the plane y = 0, xy both. Generated "
-                        "quarter shapes always use xy, full shapes none.");
+      prm.declare_entry(
+        "Mesh file",
+        "",
+        Anything(),
+        "For 'gmsh': a 2-D quadrilateral planform mesh (.msh) or a gmsh "
+        "geometry (.geo, meshed on reading with recombined quads); it is "
+        "extruded through the thickness. Relative paths are taken from "
+        "the working directory.");
+      prm.declare_entry(
+        "Symmetry planes",
+        "xy",
+        Selection("none|x|y|xy"),
+        "Symmetry planes of a 'gmsh' blank: x means the plane x = 0 "
+        "(no normal velocity), y the plane y = 0, xy both. Generated "
+        "quarter shapes always use xy, full shapes none.");
       prm.leave_subsection();
     }
 
@@ -81,20 +99,25 @@ namespace formsolve
 
     void Geometry::validate() const
     {
-      require(thickness > 0, "Geometry/Thickness",
+      require(thickness > 0,
+              "Geometry/Thickness",
               "must be positive (mm), got " + str(thickness));
       if (blank_shape == "disk" || blank_shape == "quarter disk")
-        require(blank_diameter > 0, "Geometry/Blank diameter",
+        require(blank_diameter > 0,
+                "Geometry/Blank diameter",
                 "must be positive (mm), got " + str(blank_diameter));
       if (blank_shape == "rectangle" || blank_shape == "quarter rectangle")
         {
-          require(blank_length > 0, "Geometry/Blank length",
+          require(blank_length > 0,
+                  "Geometry/Blank length",
                   "must be positive (mm), got " + str(blank_length));
-          require(blank_width > 0, "Geometry/Blank width",
+          require(blank_width > 0,
+                  "Geometry/Blank width",
                   "must be positive (mm), got " + str(blank_width));
         }
       if (blank_shape == "gmsh")
-        require(!mesh_file.empty(), "Geometry/Mesh file",
+        require(!mesh_file.empty(),
+                "Geometry/Mesh file",
                 "must name a .msh or .geo file when 'Blank shape' is gmsh");
     }
 
@@ -117,15 +140,24 @@ namespace formsolve
     void Mesh::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Mesh");
-      prm.declare_entry("Element degree", "1", Integer(1, 2),
-                        "Polynomial degree of the FE_Q velocity elements (1 or 2).");
-      prm.declare_entry("Layers through thickness", "4", Integer(1, 64),
-                        "Number of hexahedral element layers through the sheet "
-                        "thickness. Bending needs at least 4 layers of degree 1 or 2 "
-                        "layers of degree 2.");
-      prm.declare_entry("Planform refinements", "4", Integer(0, 12),
-                        "Global refinements of the coarse 2-D planform before it is "
-                        "extruded (each halves the in-plane element size).");
+      prm.declare_entry(
+        "Element degree",
+        "1",
+        Integer(1, 2),
+        "Polynomial degree of the FE_Q velocity elements (1 or 2).");
+      prm.declare_entry(
+        "Layers through thickness",
+        "4",
+        Integer(1, 64),
+        "Number of hexahedral element layers through the sheet "
+        "thickness. Bending needs at least 4 layers of degree 1 or 2 "
+        "layers of degree 2.");
+      prm.declare_entry(
+        "Planform refinements",
+        "4",
+        Integer(0, 12),
+        "Global refinements of the coarse 2-D planform before it is "
+        "extruded (each halves the in-plane element size).");
       prm.leave_subsection();
     }
 
@@ -144,23 +176,42 @@ namespace formsolve
     void Material::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Material");
-      prm.declare_entry("Strength coefficient", "829", Double(),
-                        "K in the flow stress sigma = K (eps0 + eps)^n (rate/rate0)^m "
-                        "(MPa). Default: material B, type 430 stainless.");
-      prm.declare_entry("Hardening exponent", "0.2", Double(0, 1),
+      prm.declare_entry(
+        "Strength coefficient",
+        "829",
+        Double(),
+        "K in the flow stress sigma = K (eps0 + eps)^n (rate/rate0)^m "
+        "(MPa). Default: material B, type 430 stainless.");
+      prm.declare_entry("Hardening exponent",
+                        "0.2",
+                        Double(0, 1),
                         "Strain-hardening exponent n (-).");
-      prm.declare_entry("Prestrain", "0.002", Double(),
-                        "eps0 (-): keeps the initial flow stress K eps0^n non-zero.");
-      prm.declare_entry("Rate sensitivity", "0", Double(0, 1),
-                        "Strain-rate sensitivity m (-); 0 gives a rigid-plastic law.");
-      prm.declare_entry("Reference strain rate", "1", Double(),
-                        "rate0 in the flow stress law (1/s); also the scale of the "
-                        "volumetric penalty.");
-      prm.declare_entry("Limiting strain rate", "1e-4", Double(),
-                        "Below this equivalent strain rate (1/s) the material is "
-                        "treated as linear viscous (rigid zones): the effective "
-                        "viscosity is frozen at its value at this rate.");
-      prm.declare_entry("Volumetric penalty", "1e4", Double(),
+      prm.declare_entry(
+        "Prestrain",
+        "0.002",
+        Double(),
+        "eps0 (-): keeps the initial flow stress K eps0^n non-zero.");
+      prm.declare_entry(
+        "Rate sensitivity",
+        "0",
+        Double(0, 1),
+        "Strain-rate sensitivity m (-); 0 gives a rigid-plastic law.");
+      prm.declare_entry(
+        "Reference strain rate",
+        "1",
+        Double(),
+        "rate0 in the flow stress law (1/s); also the scale of the "
+        "volumetric penalty.");
+      prm.declare_entry(
+        "Limiting strain rate",
+        "1e-4",
+        Double(),
+        "Below this equivalent strain rate (1/s) the material is "
+        "treated as linear viscous (rigid zones): the effective "
+        "viscosity is frozen at its value at this rate.");
+      prm.declare_entry("Volumetric penalty",
+                        "1e4",
+                        Double(),
                         "alpha (-): the mean stress is sigma_m = alpha K/rate0 "
                         "tr(strain rate), integrated with reduced quadrature.");
       prm.leave_subsection();
@@ -181,15 +232,20 @@ namespace formsolve
 
     void Material::validate() const
     {
-      require(strength_coefficient > 0, "Material/Strength coefficient",
+      require(strength_coefficient > 0,
+              "Material/Strength coefficient",
               "must be positive (MPa), got " + str(strength_coefficient));
-      require(prestrain > 0 || hardening_exponent == 0, "Material/Prestrain",
+      require(prestrain > 0 || hardening_exponent == 0,
+              "Material/Prestrain",
               "must be positive when the hardening exponent is non-zero");
-      require(reference_strain_rate > 0, "Material/Reference strain rate",
+      require(reference_strain_rate > 0,
+              "Material/Reference strain rate",
               "must be positive (1/s)");
-      require(limiting_strain_rate > 0, "Material/Limiting strain rate",
+      require(limiting_strain_rate > 0,
+              "Material/Limiting strain rate",
               "must be positive (1/s)");
-      require(volumetric_penalty > 0, "Material/Volumetric penalty",
+      require(volumetric_penalty > 0,
+              "Material/Volumetric penalty",
               "must be positive");
     }
 
@@ -197,37 +253,68 @@ namespace formsolve
     void Tool::declare(ParameterHandler &prm, const Tool &d)
     {
       prm.enter_subsection(d.name);
-      prm.declare_entry("Enabled", d.enabled ? "true" : "false", Bool(),
+      prm.declare_entry("Enabled",
+                        d.enabled ? "true" : "false",
+                        Bool(),
                         "Whether this tool takes part.");
-      prm.declare_entry("Shape", d.shape, Selection("round|rounded rectangle|flat"),
-                        "round: surface of revolution about the z axis; rounded "
-                        "rectangle: for square cups; flat: an infinite plane.");
-      prm.declare_entry("Diameter", str(d.diameter), Double(0),
-                        "Round tools: punch diameter, die opening diameter, or blank "
-                        "holder inner diameter (mm).");
-      prm.declare_entry("Length", str(d.length), Double(0),
+      prm.declare_entry(
+        "Shape",
+        d.shape,
+        Selection("round|rounded rectangle|flat"),
+        "round: surface of revolution about the z axis; rounded "
+        "rectangle: for square cups; flat: an infinite plane.");
+      prm.declare_entry(
+        "Diameter",
+        str(d.diameter),
+        Double(0),
+        "Round tools: punch diameter, die opening diameter, or blank "
+        "holder inner diameter (mm).");
+      prm.declare_entry("Length",
+                        str(d.length),
+                        Double(0),
                         "Rounded rectangle: full size along x (mm).");
-      prm.declare_entry("Width", str(d.width), Double(0),
+      prm.declare_entry("Width",
+                        str(d.width),
+                        Double(0),
                         "Rounded rectangle: full size along y (mm).");
-      prm.declare_entry("Corner radius", str(d.corner_radius), Double(0),
-                        "Rounded rectangle: in-plane corner radius (mm); at least the "
-                        "profile radius for a punch.");
-      prm.declare_entry("Profile radius", str(d.profile_radius), Double(0),
+      prm.declare_entry(
+        "Corner radius",
+        str(d.corner_radius),
+        Double(0),
+        "Rounded rectangle: in-plane corner radius (mm); at least the "
+        "profile radius for a punch.");
+      prm.declare_entry("Profile radius",
+                        str(d.profile_radius),
+                        Double(0),
                         "Radius of the rounded working edge (punch nose, die "
                         "entry) (mm).");
-      prm.declare_entry("Gap", str(d.gap), Double(),
-                        "Initial distance between the tool face and the sheet surface "
-                        "it acts on (mm). The die is below the sheet (z <= 0), punch "
-                        "and blank holder above (z >= thickness).");
-      prm.declare_entry("Stroke", str(d.stroke), Double(0),
-                        "Total tool travel (mm). The punch travel ends the run.");
-      prm.declare_entry("Speed", str(d.speed), Double(0),
-                        "Tool speed (mm/s), moving in -z. Only the punch moves.");
-      prm.declare_entry("Friction coefficient", str(d.friction_coefficient), Double(0),
+      prm.declare_entry(
+        "Gap",
+        str(d.gap),
+        Double(),
+        "Initial distance between the tool face and the sheet surface "
+        "it acts on (mm). The die is below the sheet (z <= 0), punch "
+        "and blank holder above (z >= thickness).");
+      prm.declare_entry(
+        "Stroke",
+        str(d.stroke),
+        Double(0),
+        "Total tool travel (mm). The punch travel ends the run.");
+      prm.declare_entry(
+        "Speed",
+        str(d.speed),
+        Double(0),
+        "Tool speed (mm/s), moving in -z. Only the punch moves.");
+      prm.declare_entry("Friction coefficient",
+                        str(d.friction_coefficient),
+                        Double(0),
                         "Coulomb friction coefficient mu (-).");
-      prm.declare_entry("Penalty factor", str(d.penalty_factor), Double(0),
-                        "Fixed contact penalty for this tool (N/mm^3, contact pressure "
-                        "per mm of penetration); 0 takes Contact/Penalty factor.");
+      prm.declare_entry(
+        "Penalty factor",
+        str(d.penalty_factor),
+        Double(0),
+        "Fixed contact penalty for this tool (N/mm^3, contact pressure "
+        "per mm of penetration); 0 takes Contact/Penalty factor.");
       prm.leave_subsection();
     }
 
@@ -254,20 +341,23 @@ namespace formsolve
       if (!enabled)
         return;
       const std::string e = "Tools/" + name + "/";
-      require(gap >= 0, e + "Gap", "must not be negative (mm), got " + str(gap));
       if (shape == "round" && name != "Blank holder" && name != "Die")
         require(diameter > 0, e + "Diameter", "must be positive (mm)");
       if (shape == "round")
         require(profile_radius <= 0.5 * diameter || name != "Punch",
-                e + "Profile radius", "must not exceed half the Diameter");
+                e + "Profile radius",
+                "must not exceed half the Diameter");
       if (shape == "rounded rectangle")
         {
-          require(length > 0 && width > 0, e + "Length",
+          require(length > 0 && width > 0,
+                  e + "Length",
                   "Length and Width must be positive (mm)");
           require(corner_radius <= 0.5 * std::min(length, width),
-                  e + "Corner radius", "must not exceed half of Length and Width");
+                  e + "Corner radius",
+                  "must not exceed half of Length and Width");
           if (name == "Punch")
-            require(corner_radius >= profile_radius, e + "Corner radius",
+            require(corner_radius >= profile_radius,
+                    e + "Corner radius",
                     "must be at least the Profile radius for a punch");
         }
     }
@@ -277,7 +367,8 @@ namespace formsolve
       prm.enter_subsection("Tools");
       Tool p{"Punch", true, "round", 40, 40, 40, 8, 8, 0, 15, 1, 0.1, 0};
       Tool d{"Die", true, "round", 42.5, 42.5, 42.5, 8, 8, 0, 0, 0, 0.1, 0};
-      Tool b{"Blank holder", true, "round", 58.5, 0, 0, 0, 0, 0.05, 0, 0, 0.1, 0};
+      Tool
+        b{"Blank holder", true, "round", 58.5, 0, 0, 0, 0, 0.05, 0, 0, 0.1, 0};
       Tool::declare(prm, p);
       Tool::declare(prm, d);
       Tool::declare(prm, b);
@@ -310,38 +401,53 @@ namespace formsolve
     void Contact::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
-      prm.declare_entry("Penalty strategy", "fixed", Selection("fixed"),
-                        "How penalty factors are chosen. fixed: 'Penalty factor' "
-                        "(or the tool's own) times the nodal contact area.");
-      prm.declare_entry("Penalty factor", "1e5", Double(),
-                        "Fixed penalty (N/mm^3): contact pressure per mm of "
-                        "penetration. Each node gets this times its contact area.");
-      prm.declare_entry("Friction regularisation velocity", "1e-3", Double(),
+      prm.declare_entry(
+        "Penalty strategy",
+        "fixed",
+        Selection("fixed"),
+        "How penalty factors are chosen. fixed: 'Penalty factor' "
+        "(or the tool's own) times the nodal contact area.");
+      prm.declare_entry(
+        "Penalty factor",
+        "1e5",
+        Double(),
+        "Fixed penalty (N/mm^3): contact pressure per mm of "
+        "penetration. Each node gets this times its contact area.");
+      prm.declare_entry("Friction regularisation velocity",
+                        "1e-3",
+                        Double(),
                         "v0 (mm/s) of the friction law f_t = -mu p (2/pi) "
                         "atan(|v_t|/v0) v_t/|v_t|.");
-      prm.declare_entry("Search distance", "1", Double(),
-                        "Sheet nodes farther than this from a tool (mm) are not "
-                        "checked for contact with it in the current step.");
+      prm.declare_entry(
+        "Search distance",
+        "1",
+        Double(),
+        "Sheet nodes farther than this from a tool (mm) are not "
+        "checked for contact with it in the current step.");
       prm.leave_subsection();
     }
 
     void Contact::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
-      penalty_strategy        = prm.get("Penalty strategy");
-      penalty_factor          = prm.get_double("Penalty factor");
-      regularisation_velocity = prm.get_double("Friction regularisation velocity");
-      search_distance         = prm.get_double("Search distance");
+      penalty_strategy = prm.get("Penalty strategy");
+      penalty_factor   = prm.get_double("Penalty factor");
+      regularisation_velocity =
+        prm.get_double("Friction regularisation velocity");
+      search_distance = prm.get_double("Search distance");
       prm.leave_subsection();
     }
 
     void Contact::validate() const
     {
-      require(penalty_factor > 0, "Contact/Penalty factor",
+      require(penalty_factor > 0,
+              "Contact/Penalty factor",
               "must be positive (N/mm^3), got " + str(penalty_factor));
       require(regularisation_velocity > 0,
-              "Contact/Friction regularisation velocity", "must be positive (mm/s)");
-      require(search_distance > 0, "Contact/Search distance",
+              "Contact/Friction regularisation velocity",
+              "must be positive (mm/s)");
+      require(search_distance > 0,
+              "Contact/Search distance",
               "must be positive (mm)");
     }
 
@@ -349,9 +455,12 @@ namespace formsolve
     void TimeStepping::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Time stepping");
-      prm.declare_entry("Time step", "0.25", Double(),
-                        "Time step (s). With the punch speed it sets the punch travel "
-                        "per step; the run ends when the punch stroke is reached.");
+      prm.declare_entry(
+        "Time step",
+        "0.25",
+        Double(),
+        "Time step (s). With the punch speed it sets the punch travel "
+        "per step; the run ends when the punch stroke is reached.");
       prm.leave_subsection();
     }
 
@@ -364,7 +473,8 @@ namespace formsolve
 
     void TimeStepping::validate() const
     {
-      require(time_step > 0, "Time stepping/Time step",
+      require(time_step > 0,
+              "Time stepping/Time step",
               "must be positive (s), got " + str(time_step));
     }
 
@@ -372,20 +482,40 @@ namespace formsolve
     void NonlinearSolver::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Nonlinear solver");
-      prm.declare_entry("Max iterations", "40", Integer(1),
+      prm.declare_entry("Max iterations",
+                        "60",
+                        Integer(1),
                         "Newton iterations per step before the step fails.");
-      prm.declare_entry("Residual tolerance", "1e-6", Double(0),
+      prm.declare_entry("Residual tolerance",
+                        "1e-6",
+                        Double(0),
                         "Converged when |r| <= tol * max(|r_0|, |f_int|) (-).");
-      prm.declare_entry("Correction tolerance", "1e-6", Double(0),
+      prm.declare_entry("Correction tolerance",
+                        "1e-6",
+                        Double(0),
                         "... and |dv| <= tol * |v| (-), and the contact set is "
                         "unchanged.");
-      prm.declare_entry("Max line search steps", "6", Integer(0, 30),
-                        "Halvings of the Newton step while the residual grows.");
-      prm.declare_entry("Picard iterations", "0", Integer(0),
-                        "Direct (secant) iterations at the start of every step.");
-      prm.declare_entry("Picard fallback", "true", Bool(),
-                        "Switch to direct iteration for the rest of the step when a "
-                        "Newton step fails to reduce the residual.");
+      prm.declare_entry(
+        "Max line search steps",
+        "6",
+        Integer(0, 30),
+        "Halvings of the Newton step while the residual grows.");
+      prm.declare_entry(
+        "Picard iterations",
+        "0",
+        Integer(0),
+        "Direct (secant) iterations at the start of every step.");
+      prm.declare_entry(
+        "Picard fallback",
+        "true",
+        Bool(),
+        "Switch to direct iteration for the rest of the step when a "
+        "Newton step fails to reduce the residual.");
+      prm.declare_entry("Log iterations",
+                        "false",
+                        Bool(),
+                        "Print one line per nonlinear iteration: residual, "
+                        "correction, line-search factor, contact-set changes.");
       prm.leave_subsection();
     }
 
@@ -398,14 +528,17 @@ namespace formsolve
       max_line_search_steps = prm.get_integer("Max line search steps");
       picard_iterations     = prm.get_integer("Picard iterations");
       picard_fallback       = prm.get_bool("Picard fallback");
+      log_iterations        = prm.get_bool("Log iterations");
       prm.leave_subsection();
     }
 
     void NonlinearSolver::validate() const
     {
-      require(residual_tolerance > 0, "Nonlinear solver/Residual tolerance",
+      require(residual_tolerance > 0,
+              "Nonlinear solver/Residual tolerance",
               "must be positive");
-      require(correction_tolerance > 0, "Nonlinear solver/Correction tolerance",
+      require(correction_tolerance > 0,
+              "Nonlinear solver/Correction tolerance",
               "must be positive");
     }
 
@@ -413,18 +546,31 @@ namespace formsolve
     void LinearSolver::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Linear solver");
-      prm.declare_entry("Type", "direct", Selection("direct|iterative"),
-                        "direct: sparse LU through Trilinos Amesos; iterative: a "
-                        "Krylov solver with ML algebraic multigrid.");
-      prm.declare_entry("Direct solver", "MUMPS", Selection("MUMPS|KLU"),
-                        "Amesos back end (MUMPS runs in parallel; KLU gathers the "
-                        "matrix on one rank).");
-      prm.declare_entry("Iterative solver", "GMRES", Selection("GMRES|CG"),
+      prm.declare_entry(
+        "Type",
+        "direct",
+        Selection("direct|iterative"),
+        "direct: sparse LU through Trilinos Amesos; iterative: a "
+        "Krylov solver with ML algebraic multigrid.");
+      prm.declare_entry(
+        "Direct solver",
+        "MUMPS",
+        Selection("MUMPS|KLU"),
+        "Amesos back end (MUMPS runs in parallel; KLU gathers the "
+        "matrix on one rank).");
+      prm.declare_entry("Iterative solver",
+                        "GMRES",
+                        Selection("GMRES|CG"),
                         "Krylov method (CG only for frictionless contact: the "
                         "friction tangent is not symmetric).");
-      prm.declare_entry("Tolerance", "1e-8", Double(0),
-                        "Relative residual tolerance of the iterative solver (-).");
-      prm.declare_entry("Max iterations", "2000", Integer(1),
+      prm.declare_entry(
+        "Tolerance",
+        "1e-8",
+        Double(0),
+        "Relative residual tolerance of the iterative solver (-).");
+      prm.declare_entry("Max iterations",
+                        "2000",
+                        Integer(1),
                         "Iteration limit of the iterative solver.");
       prm.leave_subsection();
     }
@@ -442,7 +588,8 @@ namespace formsolve
 
     void LinearSolver::validate() const
     {
-      require(tolerance > 0 && tolerance < 1, "Linear solver/Tolerance",
+      require(tolerance > 0 && tolerance < 1,
+              "Linear solver/Tolerance",
               "must lie in (0, 1)");
     }
 
@@ -450,14 +597,23 @@ namespace formsolve
     void Output::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Output");
-      prm.declare_entry("Output directory", "results/cup-drawing", Anything(),
-                        "Folder for parameters.prm, history.csv and the VTU/PVTU/PVD "
-                        "files; created if missing.");
-      prm.declare_entry("Output interval", "5", Integer(0),
-                        "Write VTU every this many steps (and the last step); 0: never.");
-      prm.declare_entry("Wall time in history", "true", Bool(),
-                        "Write measured wall times into history.csv (false gives "
-                        "reproducible files, e.g. for regression tests).");
+      prm.declare_entry(
+        "Output directory",
+        "results/cup-drawing",
+        Anything(),
+        "Folder for parameters.prm, history.csv and the VTU/PVTU/PVD "
+        "files; created if missing.");
+      prm.declare_entry(
+        "Output interval",
+        "5",
+        Integer(0),
+        "Write VTU every this many steps (and the last step); 0: never.");
+      prm.declare_entry(
+        "Wall time in history",
+        "true",
+        Bool(),
+        "Write measured wall times into history.csv (false gives "
+        "reproducible files, e.g. for regression tests).");
       prm.leave_subsection();
     }
 
@@ -472,7 +628,9 @@ namespace formsolve
 
     void Output::validate() const
     {
-      require(!directory.empty(), "Output/Output directory", "must not be empty");
+      require(!directory.empty(),
+              "Output/Output directory",
+              "must not be empty");
     }
 
     // ------------------------------------------------------------------- Run
@@ -514,10 +672,12 @@ namespace formsolve
       linear.validate();
       output.validate();
       if (tools.die.enabled && tools.die.shape == "round" &&
-          (geometry.blank_shape == "disk" || geometry.blank_shape == "quarter disk"))
-        require(geometry.blank_diameter > tools.die.diameter,
-                "Geometry/Blank diameter",
-                "must exceed Tools/Die/Diameter, or the blank falls through the die");
+          (geometry.blank_shape == "disk" ||
+           geometry.blank_shape == "quarter disk"))
+        require(
+          geometry.blank_diameter > tools.die.diameter,
+          "Geometry/Blank diameter",
+          "must exceed Tools/Die/Diameter, or the blank falls through the die");
     }
   } // namespace parameters
 } // namespace formsolve

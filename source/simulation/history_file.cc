@@ -8,10 +8,10 @@ namespace formsolve
 {
   namespace simulation
   {
-    HistoryFile::HistoryFile(const std::string &             path,
+    HistoryFile::HistoryFile(const std::string              &path,
                              const std::vector<std::string> &columns,
                              const bool                      is_root)
-      : n_columns(columns.size())
+        : n_columns(columns.size())
     {
       if (!is_root)
         return;

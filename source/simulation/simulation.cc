@@ -23,21 +23,26 @@ namespace formsolve
     using namespace dealii;
 
     template <int dim>
-    Simulation<dim>::Simulation(const parameters::Run &run, const ParameterHandler &ph)
-      : prm(run)
-      , parameter_handler(ph)
-      , comm(MPI_COMM_WORLD)
-      , pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
-      , tria(comm)
-      , fe(FE_Q<dim>(run.mesh.degree), dim)
-      , dof_handler(tria)
-      , reference_mapping(run.mesh.degree)
-      , material(run.material)
-      , assembler(material, run.mesh.degree)
-      , tools(run.tools, run.contact, run.geometry.thickness)
-      , contact_post(run.contact.search_distance, run.contact.regularisation_velocity)
-      , estimator(contact::create_penalty_estimator<dim>(run.contact))
+    Simulation<dim>::Simulation(const parameters::Run  &run,
+                                const ParameterHandler &ph)
+        : prm(run)
+        , parameter_handler(ph)
+        , comm(MPI_COMM_WORLD)
+        , pcout(std::cout,
+                Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        // Rank 0's timings; no communicator, so an error on the way out of
+        // run() cannot deadlock in the timer's destructor.
+        , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+        , tria(comm)
+        , fe(FE_Q<dim>(run.mesh.degree), dim)
+        , dof_handler(tria)
+        , reference_mapping(run.mesh.degree)
+        , material(run.material)
+        , assembler(material, reference_mapping, run.mesh.degree)
+        , tools(run.tools, run.contact, run.geometry.thickness)
+        , contact_post(run.contact.search_distance,
+                       run.contact.regularisation_velocity)
+        , estimator(contact::create_penalty_estimator<dim>(run.contact))
     {}
 
     template <int dim>
@@ -46,7 +51,7 @@ namespace formsolve
       TimerOutput::Scope t(timer, "setup");
       geometry::create_blank_mesh(prm.geometry, prm.mesh, tria);
       dof_handler.distribute_dofs(fe);
-      owned    = dof_handler.locally_owned_dofs();
+      owned = dof_handler.locally_owned_dofs();
       DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
 
       constraints.clear();
@@ -55,15 +60,21 @@ namespace formsolve
       // Symmetry planes: no velocity normal to the plane.
       const Functions::ZeroFunction<dim> zero(dim);
       if (prm.geometry.symmetric_in_x())
-        VectorTools::interpolate_boundary_values(reference_mapping, dof_handler,
-                                                 geometry::symmetry_x, zero, constraints,
-                                                 fe.component_mask(
-                                                   FEValuesExtractors::Scalar(0)));
+        VectorTools::interpolate_boundary_values(
+          reference_mapping,
+          dof_handler,
+          geometry::symmetry_x,
+          zero,
+          constraints,
+          fe.component_mask(FEValuesExtractors::Scalar(0)));
       if (prm.geometry.symmetric_in_y())
-        VectorTools::interpolate_boundary_values(reference_mapping, dof_handler,
-                                                 geometry::symmetry_y, zero, constraints,
-                                                 fe.component_mask(
-                                                   FEValuesExtractors::Scalar(1)));
+        VectorTools::interpolate_boundary_values(
+          reference_mapping,
+          dof_handler,
+          geometry::symmetry_y,
+          zero,
+          constraints,
+          fe.component_mask(FEValuesExtractors::Scalar(1)));
       constraints.close();
 
       DynamicSparsityPattern dsp(relevant);
@@ -77,21 +88,29 @@ namespace formsolve
       contact_fields.reinit(owned, comm);
       velocity_ghost.reinit(owned, relevant, comm);
       displacement_ghost.reinit(owned, relevant, comm);
-      mapping = std::make_unique<MappingQEulerian<dim, VectorType>>(
-        prm.mesh.degree, dof_handler, displacement_ghost);
+      mapping =
+        std::make_unique<MappingQEulerian<dim, VectorType>>(prm.mesh.degree,
+                                                            dof_handler,
+                                                            displacement_ghost);
 
       assembler.initialize_history(dof_handler, history);
       contact_post.setup(dof_handler, reference_mapping, contact_set);
 
       std::vector<std::vector<bool>> modes;
-      DoFTools::extract_constant_modes(dof_handler, ComponentMask(dim, true), modes);
+      DoFTools::extract_constant_modes(dof_handler,
+                                       ComponentMask(dim, true),
+                                       modes);
       linear_solver = std::make_unique<solver::LinearSolver>(prm.linear, modes);
     }
 
     template <int dim>
     void Simulation<dim>::check_initial_scene()
     {
-      contact_post.evaluate(tools, displacement_ghost, velocity_ghost, 0., contact_set);
+      contact_post.evaluate(tools,
+                            displacement_ghost,
+                            velocity_ghost,
+                            0.,
+                            contact_set);
       const double tol = 1e-6 * prm.geometry.thickness;
       for (unsigned int t = 0; t < tools.size(); ++t)
         {
@@ -101,8 +120,9 @@ namespace formsolve
               worst = std::max(worst, -p.gap);
           worst = Utilities::MPI::max(worst, comm);
           std::ostringstream s;
-          s << "Tools/" << tools[t].name() << ": the blank starts inside this tool ("
-            << worst << " mm deep); check its Gap, Diameter and Profile radius "
+          s << "Tools/" << tools[t].name()
+            << ": the blank starts inside this tool (" << worst
+            << " mm deep); check its Gap, Diameter and Profile radius "
             << "against Geometry";
           AssertThrow(worst <= tol, ExcMessage(s.str()));
         }
@@ -118,15 +138,17 @@ namespace formsolve
           std::error_code ec;
           std::filesystem::create_directories(dir, ec);
           const std::string probe = dir + "/.formsolve-write-test";
-          ok = !ec && std::ofstream(probe).good();
+          ok                      = !ec && std::ofstream(probe).good();
           std::filesystem::remove(probe, ec);
           if (ok)
             parameter_handler.print_parameters(dir + "/parameters.prm",
                                                ParameterHandler::PRM);
         }
       ok = Utilities::MPI::min(ok, comm);
-      AssertThrow(ok, ExcMessage("Output/Output directory: cannot create or write '" +
-                                 dir + "'"));
+      AssertThrow(ok,
+                  ExcMessage(
+                    "Output/Output directory: cannot create or write '" + dir +
+                    "'"));
     }
 
     template <int dim>
@@ -135,14 +157,28 @@ namespace formsolve
       velocity_ghost = v;
       {
         TimerOutput::Scope t(timer, "contact");
-        contact_post.evaluate(tools, displacement_ghost, velocity_ghost, dt, contact_set);
+        contact_post.evaluate(tools,
+                              displacement_ghost,
+                              velocity_ghost,
+                              dt,
+                              contact_set);
         estimator->estimate(contact_set, tools, epsilon);
       }
-      TimerOutput::Scope            t(timer, "assembly");
-      solver::ContactInput<dim>     contact{&contact_set, &epsilon, &tools,
+      TimerOutput::Scope        t(timer, "assembly");
+      solver::ContactInput<dim> contact{&contact_set,
+                                        &epsilon,
+                                        &tools,
                                         prm.contact.regularisation_velocity};
-      f_scale = assembler.assemble(dof_handler, *mapping, constraints, velocity_ghost,
-                                   history, dt, contact, newton, &matrix, residual);
+      f_scale = assembler.assemble(dof_handler,
+                                   *mapping,
+                                   constraints,
+                                   velocity_ghost,
+                                   history,
+                                   dt,
+                                   contact,
+                                   newton,
+                                   &matrix,
+                                   residual);
       return residual.l2_norm();
     }
 
@@ -173,21 +209,29 @@ namespace formsolve
     {
       // Component 0: smallest predicted gap (capped at the search distance),
       // 1: contact pressure, 2: penalty factor of the active pairs.
-      contact_fields = 0;
-      for (const auto &node : contact_set.nodes)
-        contact_fields[node.dofs[0]] = prm.contact.search_distance;
+      // Accumulate per node first: mixing set and add on a Trilinos vector
+      // triggers a collective exchange that ranks would reach unevenly.
+      const unsigned int  n = contact_set.nodes.size();
+      std::vector<double> gap(n, prm.contact.search_distance), pressure(n, 0.),
+        penalty(n, 0.);
       for (unsigned int k = 0; k < contact_set.pairs.size(); ++k)
         {
-          const auto &p    = contact_set.pairs[k];
-          const auto &node = contact_set.nodes[p.node];
-          contact_fields[node.dofs[0]] =
-            std::min<double>(contact_fields[node.dofs[0]], p.predicted_gap);
+          const auto &p = contact_set.pairs[k];
+          gap[p.node]   = std::min(gap[p.node], p.predicted_gap);
           if (p.active)
             {
-              contact_fields[node.dofs[1]] +=
-                -epsilon[k] * p.predicted_gap / std::max(node.area, 1e-300);
-              contact_fields[node.dofs[2]] += epsilon[k];
+              pressure[p.node] +=
+                -epsilon[k] * p.predicted_gap / std::max(p.area, 1e-300);
+              penalty[p.node] += epsilon[k];
             }
+        }
+      contact_fields = 0;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const auto &dofs        = contact_set.nodes[j].dofs;
+          contact_fields[dofs[0]] = gap[j];
+          contact_fields[dofs[1]] = pressure[j];
+          contact_fields[dofs[2]] = penalty[j];
         }
       contact_fields.compress(VectorOperation::insert);
     }
@@ -195,9 +239,9 @@ namespace formsolve
     template <int dim>
     RunSummary Simulation<dim>::run()
     {
-      using Clock      = std::chrono::steady_clock;
-      const auto start = Clock::now();
-      auto seconds = [&]() {
+      using Clock        = std::chrono::steady_clock;
+      const auto start   = Clock::now();
+      auto       seconds = [&]() {
         return std::chrono::duration<double>(Clock::now() - start).count();
       };
 
@@ -206,19 +250,27 @@ namespace formsolve
       prepare_output_directory();
 
       const double sym = prm.geometry.symmetry_factor();
-      pcout << "formsolve: " << Utilities::MPI::n_mpi_processes(comm) << " rank(s), "
-            << tria.n_global_active_cells() << " cells, " << dof_handler.n_dofs()
-            << " DoFs (Q" << prm.mesh.degree << ", " << prm.mesh.layers
-            << " layers), forces scaled by " << sym << " to the full part\n";
+      pcout << "formsolve: " << Utilities::MPI::n_mpi_processes(comm)
+            << " rank(s), " << tria.n_global_active_cells() << " cells, "
+            << dof_handler.n_dofs() << " DoFs (Q" << prm.mesh.degree << ", "
+            << prm.mesh.layers << " layers), forces scaled by " << sym
+            << " to the full part\n";
 
-      std::vector<std::string> columns = {"step", "time", "punch_travel", "punch_force",
-                                          "max_penetration", "newton_iterations",
-                                          "linear_iterations", "wall_time"};
+      std::vector<std::string> columns = {"step",
+                                          "time",
+                                          "punch_travel",
+                                          "punch_force",
+                                          "max_penetration",
+                                          "newton_iterations",
+                                          "linear_iterations",
+                                          "wall_time"};
       for (unsigned int t = 0; t < tools.size(); ++t)
-        columns.push_back(tools.key(t) + "_force");
-      columns.insert(columns.end(), {"volume", "mean_penetration", "active_contacts",
-                                     "picard_iterations"});
-      HistoryFile history_file(prm.output.directory + "/history.csv", columns,
+        columns.push_back("force_" + tools.key(t));
+      columns.insert(
+        columns.end(),
+        {"volume", "mean_penetration", "active_contacts", "picard_iterations"});
+      HistoryFile            history_file(prm.output.directory + "/history.csv",
+                               columns,
                                Utilities::MPI::this_mpi_process(comm) == 0);
       output::VtuWriter<dim> writer(prm.output.directory);
       auto write = [&](const unsigned int step, const double time) {
@@ -227,29 +279,35 @@ namespace formsolve
         fill_contact_fields();
         VectorType contact_ghost(owned, relevant, comm);
         contact_ghost = contact_fields;
-        output::OutputFields<dim> f{&velocity_ghost, &displacement_ghost,
-                                    &contact_ghost, &history};
+        output::OutputFields<dim> f{&velocity_ghost,
+                                    &displacement_ghost,
+                                    &contact_ghost,
+                                    &history};
         writer.write(step, time, dof_handler, *mapping, f);
       };
       if (prm.output.interval > 0)
         write(0, 0.);
 
-      const solver::NewtonSolver newton(prm.nonlinear,
-                                        ConditionalOStream(std::cout, false));
-      RunSummary   summary;
-      summary.n_dofs = dof_handler.n_dofs();
-      double       time = 0;
-      unsigned int step = 0;
+      const solver::NewtonSolver newton(
+        prm.nonlinear,
+        ConditionalOStream(std::cout,
+                           pcout.is_active() && prm.nonlinear.log_iterations));
+      RunSummary summary;
+      summary.n_dofs      = dof_handler.n_dofs();
+      double       time   = 0;
+      unsigned int step   = 0;
       const double stroke = tools.punch_stroke(), speed = tools.punch_speed();
       while (tools.punch_travel() < stroke * (1 - 1e-12))
         {
           ++step;
-          dt = std::min(prm.time.time_step, (stroke - tools.punch_travel()) / speed);
+          dt = std::min(prm.time.time_step,
+                        (stroke - tools.punch_travel()) / speed);
           {
             TimerOutput::Scope t(timer, "contact");
             contact_post.update_areas(dof_handler, *mapping, contact_set);
           }
-          constraints.distribute(velocity); // previous step's velocity: predictor
+          constraints.distribute(
+            velocity); // previous step's velocity: predictor
           const double newton_start = seconds();
           const auto   report       = newton.solve(*this, velocity);
           summary.newton_wall_time += seconds() - newton_start;
@@ -271,7 +329,11 @@ namespace formsolve
           velocity_ghost = velocity;
           {
             TimerOutput::Scope t(timer, "state update");
-            assembler.update_history(dof_handler, *mapping, velocity_ghost, dt, history);
+            assembler.update_history(dof_handler,
+                                     *mapping,
+                                     velocity_ghost,
+                                     dt,
+                                     history);
             displacement.add(dt, velocity);
             displacement_ghost = displacement;
             tools.advance(dt);
@@ -284,16 +346,25 @@ namespace formsolve
           summary.linear_iterations += report.linear_iterations;
           const double wall   = seconds();
           const double travel = tools.punch_travel();
-          // Axial (z) forces of the sheet on the tools, full part, pressing = +.
-          const double punch_force = sym * stats.tool_force[0][dim - 1];
-          std::vector<double> row = {double(step), time, travel, punch_force,
-                                     stats.max_penetration, double(report.iterations),
-                                     double(report.linear_iterations),
-                                     prm.output.wall_time_in_history ? wall : 0.};
+          // Axial (z) forces of the sheet on the tools, full part, pressing =
+          // +.
+          const double        punch_force = sym * stats.tool_force[0][dim - 1];
+          std::vector<double> row         = {double(step),
+                                             time,
+                                             travel,
+                                             punch_force,
+                                             stats.max_penetration,
+                                             double(report.iterations),
+                                             double(report.linear_iterations),
+                                     prm.output.wall_time_in_history ? wall
+                                                                             : 0.};
           for (unsigned int t = 0; t < tools.size(); ++t)
             row.push_back(sym * std::abs(stats.tool_force[t][dim - 1]));
-          row.insert(row.end(), {sym * volume, stats.mean_penetration,
-                                 double(stats.n_active), double(report.picard_iterations)});
+          row.insert(row.end(),
+                     {sym * volume,
+                      stats.mean_penetration,
+                      double(stats.n_active),
+                      double(report.picard_iterations)});
           history_file.write_row(row);
 
           const double left = wall / travel * (stroke - travel);
@@ -307,11 +378,12 @@ namespace formsolve
                 << std::defaultfloat << std::endl;
 
           const bool last = tools.punch_travel() >= stroke * (1 - 1e-12);
-          if (prm.output.interval > 0 && (step % prm.output.interval == 0 || last))
+          if (prm.output.interval > 0 &&
+              (step % prm.output.interval == 0 || last))
             write(step, time);
         }
 
-      summary.wall_time      = seconds();
+      summary.wall_time = seconds();
       {
         Utilities::System::MemoryStats m;
         Utilities::System::get_memory_stats(m);

@@ -14,28 +14,52 @@ namespace formsolve
 
     template <int dim>
     Assembler<dim>::Assembler(const material::RigidViscoplastic<dim> &material,
-                              const unsigned int                       degree)
-      : material(material)
-      , full(degree + 1)
-      , reduced(degree)
+                              const Mapping<dim> &reference_mapping,
+                              const unsigned int  degree)
+        : material(material)
+        , reference_mapping(reference_mapping)
+        , full(degree + 1)
+        , reduced(degree)
     {}
 
     template <int dim>
-    double Assembler<dim>::assemble(const DoFHandler<dim> &          dof_handler,
-                                    const Mapping<dim> &             mapping,
-                                    const AffineConstraints<double> &constraints,
-                                    const VectorType &               v,
-                                    const HistoryStorage<dim> &      history,
-                                    const double                     dt,
-                                    const ContactInput<dim> &        contact,
-                                    const bool                       newton,
-                                    MatrixType *                     matrix,
-                                    VectorType &                     residual) const
+    template <typename Iterator>
+    void Assembler<dim>::volumetric_rates(const Iterator      &cell,
+                                          FEValues<dim>       &current,
+                                          FEValues<dim>       &initial,
+                                          const VectorType    &v,
+                                          const double         dt,
+                                          std::vector<double> &rates) const
     {
-      const auto &       fe = dof_handler.get_fe();
+      const FEValuesExtractors::Vector velocity(0);
+      initial.reinit(cell);
+      current[velocity].get_function_divergences(v, rates);
+      if (dt > 0)
+        for (unsigned int q = 0; q < rates.size(); ++q)
+          rates[q] += std::log(current.JxW(q) / initial.JxW(q)) / dt;
+    }
+
+    template <int dim>
+    double
+    Assembler<dim>::assemble(const DoFHandler<dim>           &dof_handler,
+                             const Mapping<dim>              &mapping,
+                             const AffineConstraints<double> &constraints,
+                             const VectorType                &v,
+                             const HistoryStorage<dim>       &history,
+                             const double                     dt,
+                             const ContactInput<dim>         &contact,
+                             const bool                       newton,
+                             MatrixType                      *matrix,
+                             VectorType                      &residual) const
+    {
+      const auto        &fe = dof_handler.get_fe();
       const unsigned int n  = fe.n_dofs_per_cell();
       FEValues<dim> fv(mapping, fe, full, update_gradients | update_JxW_values);
-      FEValues<dim> fr(mapping, fe, reduced, update_gradients | update_JxW_values);
+      FEValues<dim> fr(mapping,
+                       fe,
+                       reduced,
+                       update_gradients | update_JxW_values);
+      FEValues<dim> f0(reference_mapping, fe, reduced, update_JxW_values);
       const FEValuesExtractors::Vector velocity(0);
 
       FullMatrix<double>                   K(n, n);
@@ -43,7 +67,7 @@ namespace formsolve
       std::vector<SymmetricTensor<2, dim>> B(n), CB(n), D(full.size());
       std::vector<double>                  div(n), div_v(reduced.size());
       std::vector<types::global_dof_index> dofs(n);
-      const double                         Kv = material.bulk_viscosity();
+      const double                         Kv     = material.bulk_viscosity();
       double                               f_int2 = 0;
 
       if (matrix)
@@ -78,8 +102,9 @@ namespace formsolve
                         K(i, j) += (B[i] * CB[j]) * JxW;
                   }
               }
-            // Incompressibility by penalty, reduced integration against locking.
-            fr[velocity].get_function_divergences(v, div_v);
+            // Incompressibility by penalty, reduced integration against
+            // locking.
+            volumetric_rates(cell, fr, f0, v, dt, div_v);
             for (unsigned int q = 0; q < reduced.size(); ++q)
               {
                 const double JxW = fr.JxW(q);
@@ -96,7 +121,11 @@ namespace formsolve
             f_int2 += r.norm_sqr();
             cell->get_dof_indices(dofs);
             if (matrix)
-              constraints.distribute_local_to_global(K, r, dofs, *matrix, residual);
+              constraints.distribute_local_to_global(K,
+                                                     r,
+                                                     dofs,
+                                                     *matrix,
+                                                     residual);
             else
               constraints.distribute_local_to_global(r, dofs, residual);
           }
@@ -106,16 +135,19 @@ namespace formsolve
           FullMatrix<double>                   Kc(dim, dim);
           Vector<double>                       rc(dim);
           std::vector<types::global_dof_index> node_dofs(dim);
-          const auto &                         set = *contact.set;
+          const auto                          &set = *contact.set;
           for (unsigned int k = 0; k < set.pairs.size(); ++k)
             {
               const auto &pair = set.pairs[k];
               if (!pair.active)
                 continue;
               const auto f = contact::penalty_friction_force(
-                pair, (*contact.epsilon)[k],
+                pair,
+                (*contact.epsilon)[k],
                 contact.tools->friction_coefficient(pair.tool),
-                contact.regularisation_velocity, dt, newton);
+                contact.regularisation_velocity,
+                dt,
+                newton);
               for (unsigned int a = 0; a < dim; ++a)
                 {
                   node_dofs[a] = set.nodes[pair.node].dofs[a];
@@ -124,7 +156,10 @@ namespace formsolve
                     Kc(a, b) = f.stiffness[a][b];
                 }
               if (matrix)
-                constraints.distribute_local_to_global(Kc, rc, node_dofs, *matrix,
+                constraints.distribute_local_to_global(Kc,
+                                                       rc,
+                                                       node_dofs,
+                                                       *matrix,
                                                        residual);
               else
                 constraints.distribute_local_to_global(rc, node_dofs, residual);
@@ -134,34 +169,40 @@ namespace formsolve
       if (matrix)
         matrix->compress(VectorOperation::add);
       residual.compress(VectorOperation::add);
-      return std::sqrt(
-        Utilities::MPI::sum(f_int2, dof_handler.get_triangulation().get_communicator()));
+      return std::sqrt(Utilities::MPI::sum(
+        f_int2,
+        dof_handler.get_triangulation().get_communicator()));
     }
 
     template <int dim>
     void Assembler<dim>::initialize_history(const DoFHandler<dim> &dof_handler,
-                                            HistoryStorage<dim> &  history) const
+                                            HistoryStorage<dim> &history) const
     {
-      for (const auto &cell : dof_handler.get_triangulation().active_cell_iterators())
+      for (const auto &cell :
+           dof_handler.get_triangulation().active_cell_iterators())
         if (cell->is_locally_owned())
           history.initialize(cell, full.size());
     }
 
     template <int dim>
     void Assembler<dim>::update_history(const DoFHandler<dim> &dof_handler,
-                                        const Mapping<dim> &   mapping,
-                                        const VectorType &     v,
+                                        const Mapping<dim>    &mapping,
+                                        const VectorType      &v,
                                         const double           dt,
-                                        HistoryStorage<dim> &  history) const
+                                        HistoryStorage<dim>   &history) const
     {
-      const auto &  fe = dof_handler.get_fe();
+      const auto   &fe = dof_handler.get_fe();
       FEValues<dim> fv(mapping, fe, full, update_gradients | update_jacobians);
-      FEValues<dim> fr(mapping, fe, reduced, update_gradients | update_JxW_values);
+      FEValues<dim> fr(mapping,
+                       fe,
+                       reduced,
+                       update_gradients | update_JxW_values);
+      FEValues<dim> f0(reference_mapping, fe, reduced, update_JxW_values);
       const FEValuesExtractors::Vector     velocity(0);
       std::vector<SymmetricTensor<2, dim>> D(full.size());
       std::vector<double>                  div_v(reduced.size());
       const double                         Kv   = material.bulk_viscosity();
-      const auto &                         flow = material.flow_stress();
+      const auto                          &flow = material.flow_stress();
 
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -169,7 +210,7 @@ namespace formsolve
             fv.reinit(cell);
             fr.reinit(cell);
             fv[velocity].get_function_symmetric_gradients(v, D);
-            fr[velocity].get_function_divergences(v, div_v);
+            volumetric_rates(cell, fr, f0, v, dt, div_v);
             double mean_div = 0, volume = 0;
             for (unsigned int q = 0; q < reduced.size(); ++q)
               {
@@ -185,7 +226,8 @@ namespace formsolve
                 h[q]->strain += dt * r.equivalent_strain_rate;
                 h[q]->strain_rate = r.equivalent_strain_rate;
                 h[q]->flow_stress =
-                  flow.value(h[q]->strain, std::max(r.equivalent_strain_rate, 1e-300));
+                  flow.value(h[q]->strain,
+                             std::max(r.equivalent_strain_rate, 1e-300));
                 h[q]->mean_stress = mean_stress;
                 // Through-thickness direction: the mapped third reference axis
                 // (the extrusion direction of the sheet mesh).
@@ -200,7 +242,7 @@ namespace formsolve
 
     template <int dim>
     double Assembler<dim>::volume(const DoFHandler<dim> &dof_handler,
-                                  const Mapping<dim> &   mapping) const
+                                  const Mapping<dim>    &mapping) const
     {
       FEValues<dim> fv(mapping, dof_handler.get_fe(), full, update_JxW_values);
       double        vol = 0;
@@ -211,19 +253,24 @@ namespace formsolve
             for (unsigned int q = 0; q < full.size(); ++q)
               vol += fv.JxW(q);
           }
-      return Utilities::MPI::sum(vol, dof_handler.get_triangulation().get_communicator());
+      return Utilities::MPI::sum(
+        vol,
+        dof_handler.get_triangulation().get_communicator());
     }
 
     template <int dim>
-    double Assembler<dim>::internal_power(const DoFHandler<dim> &    dof_handler,
-                                          const Mapping<dim> &       mapping,
-                                          const VectorType &         v,
+    double Assembler<dim>::internal_power(const DoFHandler<dim> &dof_handler,
+                                          const Mapping<dim>    &mapping,
+                                          const VectorType      &v,
                                           const HistoryStorage<dim> &history,
                                           const double               dt) const
     {
-      const auto &  fe = dof_handler.get_fe();
+      const auto   &fe = dof_handler.get_fe();
       FEValues<dim> fv(mapping, fe, full, update_gradients | update_JxW_values);
-      FEValues<dim> fr(mapping, fe, reduced, update_gradients | update_JxW_values);
+      FEValues<dim> fr(mapping,
+                       fe,
+                       reduced,
+                       update_gradients | update_JxW_values);
       const FEValuesExtractors::Vector     velocity(0);
       std::vector<SymmetricTensor<2, dim>> D(full.size());
       std::vector<double>                  div_v(reduced.size());
@@ -238,13 +285,15 @@ namespace formsolve
             const auto h = history.get_data(cell);
             for (unsigned int q = 0; q < full.size(); ++q)
               power += material.evaluate(D[q], h[q]->strain, dt, false)
-                           .deviatoric_stress *
-                         D[q] * fv.JxW(q);
+                         .deviatoric_stress *
+                       D[q] * fv.JxW(q);
             for (unsigned int q = 0; q < reduced.size(); ++q)
-              power += material.bulk_viscosity() * div_v[q] * div_v[q] * fr.JxW(q);
+              power +=
+                material.bulk_viscosity() * div_v[q] * div_v[q] * fr.JxW(q);
           }
-      return Utilities::MPI::sum(power,
-                                 dof_handler.get_triangulation().get_communicator());
+      return Utilities::MPI::sum(
+        power,
+        dof_handler.get_triangulation().get_communicator());
     }
 
     template class Assembler<3>;

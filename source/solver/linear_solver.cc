@@ -12,21 +12,23 @@ namespace formsolve
   {
     using namespace dealii;
 
-    LinearSolver::LinearSolver(const parameters::LinearSolver &     p,
+    LinearSolver::LinearSolver(const parameters::LinearSolver       &p,
                                const std::vector<std::vector<bool>> &modes)
-      : prm(p)
-      , constant_modes(modes)
+        : prm(p)
+        , constant_modes(modes)
     {}
 
-    unsigned int LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
-                                     TrilinosWrappers::MPI::Vector &       x,
-                                     const TrilinosWrappers::MPI::Vector & b) const
+    unsigned int
+    LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
+                        TrilinosWrappers::MPI::Vector        &x,
+                        const TrilinosWrappers::MPI::Vector  &b) const
     {
       if (prm.type == "direct")
         {
-          SolverControl control(1, 0);
+          SolverControl                                  control(1, 0);
           TrilinosWrappers::SolverDirect::AdditionalData data(
-            false, prm.direct_solver == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
+            false,
+            prm.direct_solver == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
           TrilinosWrappers::SolverDirect direct(control, data);
           direct.solve(A, x, b);
           return 1;
@@ -50,7 +52,8 @@ namespace formsolve
       else
         {
           SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-            control, SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(100));
+            control,
+            SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(100));
           gmres.solve(A, x, b, amg);
         }
       return control.last_step();

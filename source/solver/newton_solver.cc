@@ -13,16 +13,16 @@ namespace formsolve
 
     NewtonSolver::NewtonSolver(const parameters::NonlinearSolver &p,
                                ConditionalOStream                 log)
-      : prm(p)
-      , log(log)
+        : prm(p)
+        , log(log)
     {}
 
-    NewtonReport NewtonSolver::solve(NonlinearSystem &            system,
+    NewtonReport NewtonSolver::solve(NonlinearSystem             &system,
                                      NonlinearSystem::VectorType &v) const
     {
       NewtonReport report;
       bool         picard   = prm.picard_iterations > 0;
-      bool         fallback = false;
+      unsigned int fallback = 0; // direct iterations left after a stall
       double       r        = system.assemble(v, !picard);
       system.contact_set_changed(); // reset: compare from here on
       NonlinearSystem::VectorType dv(v), trial(v);
@@ -47,43 +47,65 @@ namespace formsolve
               return report;
             }
 
-          // Backtracking on |r|; the last trial's assembly serves the next
-          // iteration, so an accepted full step costs one assembly.
-          const bool next_newton =
-            !fallback && it >= prm.picard_iterations;
-          double alpha = 1, r_trial = 0;
+          // Line search on the directional derivative g(alpha) = dv . r(v +
+          // alpha dv) of the (for frictionless contact convex) potential:
+          // accept when |g| has dropped enough or g < 0 with a smaller |r|,
+          // else regula falsi towards g = 0. The last trial's assembly serves
+          // the next iteration, so an accepted full step costs one assembly.
+          const bool next_newton = fallback == 0 && it >= prm.picard_iterations;
+          bool       stalled     = false;
+          const double g0        = system.residual_dot(dv);
+          double       alpha = 1, r_trial = 0, a_lo = 0, g_lo = g0;
           for (unsigned int ls = 0;; ++ls)
             {
               trial = v;
               trial.add(alpha, dv);
-              r_trial = system.assemble(trial, next_newton);
-              if (r_trial < (1. - 1e-4 * alpha) * r || ls >= prm.max_line_search_steps)
+              r_trial        = system.assemble(trial, next_newton);
+              const double g = system.residual_dot(dv);
+              if (!(g0 < 0) || std::abs(g) <= 0.5 * std::abs(g0) ||
+                  (g < 0 && r_trial < r))
                 break;
-              alpha *= 0.5;
+              if (ls >= prm.max_line_search_steps)
+                {
+                  stalled = true;
+                  break;
+                }
+              if (g < 0) // still descending: move the lower bracket
+                {
+                  a_lo = alpha, g_lo = g;
+                  break;
+                }
+              const double a_new = a_lo + (alpha - a_lo) * g_lo / (g_lo - g);
+              alpha = std::min(std::max(a_new, a_lo + 0.1 * (alpha - a_lo)),
+                               a_lo + 0.9 * (alpha - a_lo));
             }
           if (!std::isfinite(r_trial))
             {
               report.failure = "Newton diverged";
               return report;
             }
-          if (r_trial >= r && next_newton && prm.picard_fallback)
+          if (fallback > 0)
+            --fallback;
+          if (stalled && next_newton && prm.picard_fallback)
             {
-              // Newton stalls: continue with direct iteration in this step.
-              fallback = true;
+              // Newton stalls: a few direct (secant) iterations, then Newton
+              // again.
+              fallback = 3;
               r_trial  = system.assemble(trial, false);
             }
-          picard = !next_newton || fallback;
-          v      = trial;
-          const bool changed = system.contact_set_changed();
-          const double scale = system.force_scale();
-          const double dv_rel = alpha * dv.l2_norm() / std::max(v.l2_norm(), 1e-300);
-          r = r_trial;
+          picard               = !next_newton || fallback > 0;
+          v                    = trial;
+          const bool   changed = system.contact_set_changed();
+          const double scale   = system.force_scale();
+          const double dv_rel =
+            alpha * dv.l2_norm() / std::max(v.l2_norm(), 1e-300);
+          r               = r_trial;
           report.residual = r / std::max(scale, 1e-300);
           log << "      it " << std::setw(2) << it << (picard ? " P" : " N")
               << "  |r|/|f|=" << std::scientific << std::setprecision(2)
-              << report.residual << "  |dv|/|v|=" << dv_rel << "  alpha=" << alpha
-              << (changed ? "  contact set changed" : "") << std::defaultfloat
-              << std::endl;
+              << report.residual << "  |dv|/|v|=" << dv_rel
+              << "  alpha=" << alpha << (changed ? "  contact set changed" : "")
+              << std::defaultfloat << std::endl;
           if (report.residual <= prm.residual_tolerance &&
               dv_rel <= prm.correction_tolerance && !changed)
             {

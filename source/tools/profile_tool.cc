@@ -10,8 +10,11 @@ namespace formsolve
   {
     using namespace dealii;
 
-    double rounded_quadrant_distance(const double a, const double b,
-                                     const double R, double &ga, double &gb)
+    double rounded_quadrant_distance(const double a,
+                                     const double b,
+                                     const double R,
+                                     double      &ga,
+                                     double      &gb)
     {
       // The rounded quadrant is the quadrant shrunk by R and dilated by R:
       // its signed distance is that of the shrunk quadrant minus R.
@@ -97,25 +100,25 @@ namespace formsolve
     }
 
     template <int dim>
-    ProfileTool<dim>::ProfileTool(const std::string &   name,
-                                  const Planform<dim> & planform,
+    ProfileTool<dim>::ProfileTool(const std::string    &name,
+                                  const Planform<dim>  &planform,
                                   const int             side_a,
                                   const int             side_b,
                                   const double          z_face,
                                   const double          profile_radius,
                                   const Tensor<1, dim> &velocity)
-      : tool_name(name)
-      , planform(planform)
-      , side_a(side_a)
-      , side_b(side_b)
-      , z_face(z_face)
-      , profile_radius(profile_radius)
-      , tool_velocity(velocity)
+        : tool_name(name)
+        , planform(planform)
+        , side_a(side_a)
+        , side_b(side_b)
+        , z_face(z_face)
+        , profile_radius(profile_radius)
+        , tool_velocity(velocity)
     {}
 
     template <int dim>
     double ProfileTool<dim>::signed_distance(const Point<dim> &x,
-                                             Tensor<1, dim> &  normal) const
+                                             Tensor<1, dim>   &normal) const
     {
       const Point<dim> p = x - offset;
       Tensor<1, dim>   grad_rho;

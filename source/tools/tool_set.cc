@@ -32,21 +32,30 @@ namespace formsolve
     } // namespace
 
     template <int dim>
-    ToolSet<dim>::ToolSet(const parameters::Tools &  p,
+    ToolSet<dim>::ToolSet(const parameters::Tools   &p,
                           const parameters::Contact &c,
                           const double               thickness)
-      : stroke(p.punch.stroke)
-      , speed(p.punch.speed)
+        : stroke(p.punch.stroke)
+        , speed(p.punch.speed)
     {
-      auto add = [&](const parameters::Tool &t, const std::string &key,
-                     const int sa, const int sb, const double z,
-                     const Tensor<1, dim> &v) {
+      auto add = [&](const parameters::Tool &t,
+                     const std::string      &key,
+                     const int               sa,
+                     const int               sb,
+                     const double            z,
+                     const Tensor<1, dim>   &v) {
         if (!t.enabled)
           return;
-        tools.push_back(std::make_unique<ProfileTool<dim>>(
-          t.name, planform_of<dim>(t), sa, sb, z, t.profile_radius, v));
+        tools.push_back(std::make_unique<ProfileTool<dim>>(t.name,
+                                                           planform_of<dim>(t),
+                                                           sa,
+                                                           sb,
+                                                           z,
+                                                           t.profile_radius,
+                                                           v));
         friction.push_back(t.friction_coefficient);
-        penalty.push_back(t.penalty_factor > 0 ? t.penalty_factor : c.penalty_factor);
+        penalty.push_back(t.penalty_factor > 0 ? t.penalty_factor
+                                               : c.penalty_factor);
         keys.push_back(key);
       };
       Tensor<1, dim> down;
@@ -54,7 +63,11 @@ namespace formsolve
       // The punch comes first: punch_index() relies on it.
       add(p.punch, "punch", -1, +1, thickness + p.punch.gap, down);
       add(p.die, "die", +1, -1, -p.die.gap, Tensor<1, dim>());
-      add(p.blank_holder, "blank_holder", +1, +1, thickness + p.blank_holder.gap,
+      add(p.blank_holder,
+          "blank_holder",
+          +1,
+          +1,
+          thickness + p.blank_holder.gap,
           Tensor<1, dim>());
     }
 

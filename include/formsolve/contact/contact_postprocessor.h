@@ -21,11 +21,12 @@ namespace formsolve
     template <int dim>
     struct ContactStatistics
     {
-      std::vector<Tensor<1, dim>> tool_force; // force of the sheet on each tool (N)
-      double       max_penetration = 0;       // mm, >= 0
-      double       mean_penetration = 0;      // mm, over penetrating nodes
-      unsigned int n_active = 0;
-      unsigned int n_penetrating = 0;
+      std::vector<Tensor<1, dim>>
+                   tool_force;           // force of the sheet on each tool (N)
+      double       max_penetration  = 0; // mm, >= 0
+      double       mean_penetration = 0; // mm, over penetrating nodes
+      unsigned int n_active         = 0;
+      unsigned int n_penetrating    = 0;
     };
 
     template <int dim>
@@ -37,26 +38,26 @@ namespace formsolve
 
       /// Collect the locally owned nodes on faces with the free-surface id.
       void setup(const dealii::DoFHandler<dim> &dof_handler,
-                 const dealii::Mapping<dim> &   reference_mapping,
-                 ContactSet<dim> &              set) const;
+                 const dealii::Mapping<dim>    &reference_mapping,
+                 ContactSet<dim>               &set) const;
 
       /// Lumped nodal areas in the configuration given by @p mapping.
       void update_areas(const dealii::DoFHandler<dim> &dof_handler,
-                        const dealii::Mapping<dim> &   mapping,
-                        ContactSet<dim> &              set) const;
+                        const dealii::Mapping<dim>    &mapping,
+                        ContactSet<dim>               &set) const;
 
       /// Gaps at the current positions (X + displacement) and predicted gaps
       /// after moving with @p velocity for @p dt. Vectors must be ghosted.
       void evaluate(const tools::ToolSet<dim> &tools,
-                    const VectorType &         displacement,
-                    const VectorType &         velocity,
+                    const VectorType          &displacement,
+                    const VectorType          &velocity,
                     const double               dt,
-                    ContactSet<dim> &          set) const;
+                    ContactSet<dim>           &set) const;
 
       /// Forces from the contact law with factors @p epsilon (one per pair),
       /// and penetration statistics of the current gaps (no prediction).
       ContactStatistics<dim> statistics(const tools::ToolSet<dim> &tools,
-                                        const ContactSet<dim> &    set,
+                                        const ContactSet<dim>     &set,
                                         const std::vector<double> &epsilon,
                                         const double               dt,
                                         const MPI_Comm             comm) const;

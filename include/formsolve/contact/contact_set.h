@@ -21,7 +21,10 @@ namespace formsolve
     {
       std::array<dealii::types::global_dof_index, dim> dofs;
       Point<dim>                                       reference_position;
-      double area = 0; // lumped surface area in the current configuration (mm^2)
+      /// Lumped area vector int phi_k n dA over the sheet surface (mm^2),
+      /// current configuration: its projection on a tool normal is the node's
+      /// share of the surface facing that tool.
+      Tensor<1, dim> area_vector;
     };
 
     /// One node near one tool, evaluated at the current velocity iterate.
@@ -30,11 +33,12 @@ namespace formsolve
     {
       unsigned int   node;
       unsigned int   tool;
-      double         gap;           // signed distance at the start of the step (mm)
+      double         gap; // signed distance at the start of the step (mm)
       double         predicted_gap; // gap + n.(v - v_tool) dt (mm)
       Tensor<1, dim> normal;        // outward tool normal at the closest point
       Tensor<1, dim> relative_velocity; // v - v_tool (mm/s)
-      bool           active;            // predicted_gap < 0
+      double         area;   // projected nodal area facing the tool (mm^2)
+      bool           active; // predicted_gap < 0
     };
 
     template <int dim>

@@ -20,10 +20,11 @@ namespace formsolve
     public:
       virtual ~PenaltyEstimator() = default;
 
-      /// One factor per pair in @p set (N/mm: nodal force per mm of penetration).
-      virtual void estimate(const ContactSet<dim> &    set,
+      /// One factor per pair in @p set (N/mm: nodal force per mm of
+      /// penetration).
+      virtual void estimate(const ContactSet<dim>     &set,
                             const tools::ToolSet<dim> &tools,
-                            std::vector<double> &      epsilon) = 0;
+                            std::vector<double>       &epsilon) = 0;
 
       virtual std::string name() const = 0;
     };
@@ -33,9 +34,9 @@ namespace formsolve
     class FixedPenalty : public PenaltyEstimator<dim>
     {
     public:
-      void estimate(const ContactSet<dim> &    set,
-                    const tools::ToolSet<dim> &tools,
-                    std::vector<double> &      epsilon) override;
+      void        estimate(const ContactSet<dim>     &set,
+                           const tools::ToolSet<dim> &tools,
+                           std::vector<double>       &epsilon) override;
       std::string name() const override { return "fixed"; }
     };
 

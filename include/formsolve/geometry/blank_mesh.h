@@ -19,8 +19,9 @@ namespace formsolve
     };
 
     /// Fills @p tria (empty) with the blank in 0 <= z <= thickness.
-    void create_blank_mesh(const parameters::Geometry &              geometry,
-                           const parameters::Mesh &                  mesh,
-                           dealii::parallel::distributed::Triangulation<3> &tria);
+    void
+    create_blank_mesh(const parameters::Geometry                      &geometry,
+                      const parameters::Mesh                          &mesh,
+                      dealii::parallel::distributed::Triangulation<3> &tria);
   } // namespace geometry
 } // namespace formsolve

@@ -29,10 +29,12 @@ namespace formsolve
     public:
       explicit RigidViscoplastic(const parameters::Material &p);
 
-      /// @p newton false gives the secant (direct-iteration) tangent 2 mu P_dev.
+      /// @p newton false gives the secant (direct-iteration) tangent 2 mu
+      /// P_dev.
       PointResponse<dim> evaluate(const SymmetricTensor<2, dim> &strain_rate,
-                                  const double strain_old, const double dt,
-                                  const bool newton) const;
+                                  const double                   strain_old,
+                                  const double                   dt,
+                                  const bool                     newton) const;
 
       /// K_v in sigma_m = K_v tr(D) (MPa s).
       double bulk_viscosity() const { return bulk; }

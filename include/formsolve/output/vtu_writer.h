@@ -25,9 +25,9 @@ namespace formsolve
       const VectorType *displacement = nullptr; // ghosted
       /// Nodal contact fields: component 0 gap, 1 pressure, 2 penalty factor.
       const VectorType *contact = nullptr; // ghosted
-      const dealii::CellDataStorage<typename dealii::Triangulation<dim>::cell_iterator,
-                                    simulation::QuadraturePointHistory> *history =
-        nullptr;
+      const dealii::CellDataStorage<
+        typename dealii::Triangulation<dim>::cell_iterator,
+        simulation::QuadraturePointHistory> *history = nullptr;
     };
 
     template <int dim>
@@ -40,11 +40,11 @@ namespace formsolve
       void write(const unsigned int             step,
                  const double                   time,
                  const dealii::DoFHandler<dim> &dof_handler,
-                 const dealii::Mapping<dim> &   mapping,
-                 const OutputFields<dim> &      fields);
+                 const dealii::Mapping<dim>    &mapping,
+                 const OutputFields<dim>       &fields);
 
     private:
-      std::string                                directory;
+      std::string                                 directory;
       std::vector<std::pair<double, std::string>> records;
     };
   } // namespace output

@@ -16,8 +16,8 @@ namespace formsolve
       std::string input_file;
       /// "Subsection/Sub/Entry" -> value, applied after the file, in order.
       std::vector<std::pair<std::string, std::string>> overrides;
-      bool help             = false;
-      bool print_parameters = false;
+      bool                                             help             = false;
+      bool                                             print_parameters = false;
 
       /// Throws dealii::ExcMessage naming the bad argument.
       static CommandLine parse(int argc, char **argv);

@@ -15,7 +15,8 @@ namespace formsolve
     /// Subsection "Geometry": the blank (sheet) before forming.
     struct Geometry
     {
-      std::string blank_shape;     // disk | quarter disk | rectangle | quarter rectangle | gmsh
+      std::string blank_shape;     // disk | quarter disk | rectangle | quarter
+                                   // rectangle | gmsh
       double      blank_diameter;  // mm
       double      blank_length;    // mm, full length along x
       double      blank_width;     // mm, full width along y
@@ -48,13 +49,13 @@ namespace formsolve
     /// Subsection "Material": flow stress and the flow-formulation constants.
     struct Material
     {
-      double strength_coefficient;     // K (MPa)
-      double hardening_exponent;       // n
-      double prestrain;                // eps_0
-      double rate_sensitivity;         // m
-      double reference_strain_rate;    // 1/s
-      double limiting_strain_rate;     // 1/s, rigid-zone cutoff
-      double volumetric_penalty;       // alpha (-)
+      double strength_coefficient;  // K (MPa)
+      double hardening_exponent;    // n
+      double prestrain;             // eps_0
+      double rate_sensitivity;      // m
+      double reference_strain_rate; // 1/s
+      double limiting_strain_rate;  // 1/s, rigid-zone cutoff
+      double volumetric_penalty;    // alpha (-)
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);
@@ -66,7 +67,7 @@ namespace formsolve
     {
       std::string name; // subsection name, also the history column prefix
       bool        enabled;
-      std::string shape; // round | rounded rectangle | flat
+      std::string shape;          // round | rounded rectangle | flat
       double      diameter;       // mm (round)
       double      length;         // mm (rounded rectangle, along x)
       double      width;          // mm (rounded rectangle, along y)
@@ -99,7 +100,7 @@ namespace formsolve
       std::string penalty_strategy; // fixed
       double      penalty_factor;   // N/mm^3 (pressure per mm of penetration)
       double      regularisation_velocity; // mm/s, friction arctan law
-      double      search_distance;  // mm, nodes farther than this are skipped
+      double      search_distance; // mm, nodes farther than this are skipped
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);
@@ -123,8 +124,10 @@ namespace formsolve
       double       residual_tolerance;
       double       correction_tolerance;
       unsigned int max_line_search_steps;
-      unsigned int picard_iterations; // direct iterations at the start of a step
-      bool         picard_fallback;
+      unsigned int
+           picard_iterations; // direct iterations at the start of a step
+      bool picard_fallback;
+      bool log_iterations;
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);
@@ -134,8 +137,8 @@ namespace formsolve
     /// Subsection "Linear solver".
     struct LinearSolver
     {
-      std::string  type;          // direct | iterative
-      std::string  direct_solver; // MUMPS | KLU
+      std::string  type;             // direct | iterative
+      std::string  direct_solver;    // MUMPS | KLU
       std::string  iterative_solver; // GMRES | CG
       double       tolerance;
       unsigned int max_iterations;
@@ -149,7 +152,7 @@ namespace formsolve
     struct Output
     {
       std::string  directory;
-      unsigned int interval;   // write VTU every N steps (0: never)
+      unsigned int interval; // write VTU every N steps (0: never)
       bool         wall_time_in_history;
 
       static void declare(ParameterHandler &prm);

@@ -13,8 +13,9 @@ namespace formsolve
     {
     public:
       /// Opens (truncates) @p path on rank 0 and writes the header.
-      HistoryFile(const std::string &path, const std::vector<std::string> &columns,
-                  const bool is_root);
+      HistoryFile(const std::string              &path,
+                  const std::vector<std::string> &columns,
+                  const bool                      is_root);
 
       /// Appends one row; @p values in the order of the columns. Flushed, so a
       /// run that stops early keeps every finished step.

@@ -10,16 +10,17 @@ namespace formsolve
   namespace simulation
   {
     struct QuadraturePointHistory
-      : public dealii::TransferableQuadraturePointData
+        : public dealii::TransferableQuadraturePointData
     {
-      double strain           = 0; // equivalent plastic strain (-)
-      double strain_rate      = 0; // equivalent strain rate of the last step (1/s)
-      double flow_stress      = 0; // MPa
-      double mean_stress      = 0; // MPa
-      double thickness_strain = 0; // log strain along the through-thickness direction
+      double strain      = 0; // equivalent plastic strain (-)
+      double strain_rate = 0; // equivalent strain rate of the last step (1/s)
+      double flow_stress = 0; // MPa
+      double mean_stress = 0; // MPa
+      double thickness_strain =
+        0; // log strain along the through-thickness direction
 
       unsigned int number_of_values() const override { return 5; }
-      void pack_values(std::vector<double> &v) const override
+      void         pack_values(std::vector<double> &v) const override
       {
         v = {strain, strain_rate, flow_stress, mean_stress, thickness_strain};
       }

@@ -43,7 +43,8 @@ namespace formsolve
     class Simulation : private solver::NonlinearSystem
     {
     public:
-      Simulation(const parameters::Run &run, const dealii::ParameterHandler &prm);
+      Simulation(const parameters::Run          &run,
+                 const dealii::ParameterHandler &prm);
 
       /// Set up, check the scene, create the output folder, run all steps.
       /// Throws with a clear message when a step fails.
@@ -62,9 +63,13 @@ namespace formsolve
       double       assemble(const VectorType &v, const bool newton) override;
       double       force_scale() const override { return f_scale; }
       unsigned int solve(VectorType &dv) override;
-      bool         contact_set_changed() override;
+      double       residual_dot(const VectorType &w) const override
+      {
+        return residual * w;
+      }
+      bool contact_set_changed() override;
 
-      const parameters::Run &         prm;
+      const parameters::Run          &prm;
       const dealii::ParameterHandler &parameter_handler;
       MPI_Comm                        comm;
       dealii::ConditionalOStream      pcout;

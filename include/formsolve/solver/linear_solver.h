@@ -16,17 +16,17 @@ namespace formsolve
     {
     public:
       /// @p constant_modes: the rigid translations per component, for AMG.
-      LinearSolver(const parameters::LinearSolver &     p,
+      LinearSolver(const parameters::LinearSolver       &p,
                    const std::vector<std::vector<bool>> &constant_modes);
 
       /// Solves A x = b; returns the iteration count (1 for direct solves).
       /// Throws with a message when the solver fails.
       unsigned int solve(const dealii::TrilinosWrappers::SparseMatrix &A,
-                         dealii::TrilinosWrappers::MPI::Vector &       x,
-                         const dealii::TrilinosWrappers::MPI::Vector & b) const;
+                         dealii::TrilinosWrappers::MPI::Vector        &x,
+                         const dealii::TrilinosWrappers::MPI::Vector  &b) const;
 
     private:
-      parameters::LinearSolver        prm;
+      parameters::LinearSolver       prm;
       std::vector<std::vector<bool>> constant_modes;
     };
   } // namespace solver

@@ -17,7 +17,7 @@ namespace formsolve
     class NonlinearSystem
     {
     public:
-      using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+      using VectorType           = dealii::TrilinosWrappers::MPI::Vector;
       virtual ~NonlinearSystem() = default;
 
       /// Evaluate contact and assemble the residual (and the tangent: Newton
@@ -25,6 +25,9 @@ namespace formsolve
       virtual double assemble(const VectorType &v, const bool newton) = 0;
       /// A force scale for |r| from the last assembly (internal forces).
       virtual double force_scale() const = 0;
+      /// w . r with the last assembled residual r (the directional derivative
+      /// of the potential along w, used by the line search).
+      virtual double residual_dot(const VectorType &w) const = 0;
       /// Solve K dv = -r with the last assembled K, r. Returns iterations.
       virtual unsigned int solve(VectorType &dv) = 0;
       /// Whether the contact set changed since the previous call.
@@ -48,11 +51,11 @@ namespace formsolve
                    dealii::ConditionalOStream         log);
 
       /// Iterate from @p v (locally owned entries, constraints satisfied).
-      NewtonReport solve(NonlinearSystem &system,
+      NewtonReport solve(NonlinearSystem             &system,
                          NonlinearSystem::VectorType &v) const;
 
     private:
-      parameters::NonlinearSolver prm;
+      parameters::NonlinearSolver        prm;
       mutable dealii::ConditionalOStream log;
     };
   } // namespace solver

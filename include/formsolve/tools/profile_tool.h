@@ -33,23 +33,26 @@ namespace formsolve
     /// between them rounded by a profile radius. In the (rho, z) section the
     /// solid is the rounded quadrant {a >= 0, b >= 0}, a = s_a rho,
     /// b = s_b (z - z_face), which gives the exact distance (doc/theory.md).
-    ///  - punch:        inside the planform, above the face (s_a = -1, s_b = +1)
-    ///  - die:          outside the opening, below the face (s_a = +1, s_b = -1)
-    ///  - blank holder: outside the opening, above the face (s_a = +1, s_b = +1)
+    ///  - punch:        inside the planform, above the face (s_a = -1, s_b =
+    ///  +1)
+    ///  - die:          outside the opening, below the face (s_a = +1, s_b =
+    ///  -1)
+    ///  - blank holder: outside the opening, above the face (s_a = +1, s_b =
+    ///  +1)
     template <int dim>
     class ProfileTool : public RigidTool<dim>
     {
     public:
-      ProfileTool(const std::string &   name,
-                  const Planform<dim> & planform,
+      ProfileTool(const std::string    &name,
+                  const Planform<dim>  &planform,
                   const int             side_a,
                   const int             side_b,
                   const double          z_face,
                   const double          profile_radius,
                   const Tensor<1, dim> &velocity);
 
-      double signed_distance(const Point<dim> &p,
-                             Tensor<1, dim> &  normal) const override;
+      double         signed_distance(const Point<dim> &p,
+                                     Tensor<1, dim>   &normal) const override;
       Tensor<1, dim> velocity() const override { return tool_velocity; }
       void           advance(const double dt) override;
       double         travel() const override { return travelled; }
@@ -71,8 +74,10 @@ namespace formsolve
 
     /// Signed distance to the rounded quadrant {a >= 0, b >= 0} with corner
     /// radius R, and its gradient (da, db). Exposed for tests.
-    double rounded_quadrant_distance(const double a, const double b,
-                                     const double R, double &grad_a,
-                                     double &grad_b);
+    double rounded_quadrant_distance(const double a,
+                                     const double b,
+                                     const double R,
+                                     double      &grad_a,
+                                     double      &grad_b);
   } // namespace tools
 } // namespace formsolve

@@ -23,7 +23,7 @@ namespace formsolve
       /// tool, negative inside (penetration). @p normal receives the unit
       /// outward normal of the tool at the closest point.
       virtual double signed_distance(const Point<dim> &p,
-                                     Tensor<1, dim> &  normal) const = 0;
+                                     Tensor<1, dim>   &normal) const = 0;
 
       /// The point of the tool surface closest to @p p.
       Point<dim> closest_point(const Point<dim> &p) const

@@ -16,17 +16,24 @@ namespace formsolve
     {
     public:
       /// Builds the enabled tools around a sheet occupying 0 <= z <= thickness.
-      ToolSet(const parameters::Tools &p, const parameters::Contact &c,
-              const double thickness);
+      ToolSet(const parameters::Tools   &p,
+              const parameters::Contact &c,
+              const double               thickness);
 
-      unsigned int        size() const { return tools.size(); }
-      const RigidTool<dim> &operator[](const unsigned int i) const { return *tools[i]; }
-      double friction_coefficient(const unsigned int i) const { return friction[i]; }
+      unsigned int          size() const { return tools.size(); }
+      const RigidTool<dim> &operator[](const unsigned int i) const
+      {
+        return *tools[i];
+      }
+      double friction_coefficient(const unsigned int i) const
+      {
+        return friction[i];
+      }
       /// Fixed penalty of tool i (N/mm^3).
       double penalty_factor(const unsigned int i) const { return penalty[i]; }
       /// Column/field name of tool i: punch, die, blank_holder.
       const std::string &key(const unsigned int i) const { return keys[i]; }
-      unsigned int punch_index() const { return 0; }
+      unsigned int       punch_index() const { return 0; }
 
       void   advance(const double dt);
       double punch_travel() const { return tools[0]->travel(); }

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Bad input: exit non-zero with one clear message naming the entry or file, and
+# leave an existing output folder exactly as it was.
+set -uo pipefail
+exe=$1 cases=$2 work=$3
+rm -rf "$work"; mkdir -p "$work"
+base="$cases/penetration.prm"
+out="$work/existing-results"
+mkdir -p "$out"
+echo "earlier results" > "$out/history.csv"
+echo "keep me" > "$out/checkpoint.dat"
+snapshot() { (cd "$out" && ls -l --time-style=+%s && cat ./*) | md5sum; }
+before=$(snapshot)
+fail=0
+
+# expect NAME PATTERN PRM [ARGS...]
+expect() {
+  local name=$1 pattern=$2 prm=$3; shift 3
+  local err="$work/$name.err"
+  "$exe" "$prm" --set "Output/Output directory=$out" "$@" > "$work/$name.out" 2> "$err"
+  local rc=$?
+  local lines; lines=$(grep -c . "$err")
+  if [ $rc -ne 0 ] && grep -qF -- "$pattern" "$err" && [ "$lines" -le 3 ]; then
+    echo "ok   $name: exit $rc: $(head -c 300 "$err" | tr '\n' ' ')"
+  else
+    echo "FAIL $name: exit $rc, expected a message naming '$pattern', got:"; cat "$err"; fail=1
+  fi
+  local now; now=$(snapshot)
+  if [ "$now" != "$before" ]; then echo "FAIL $name: the existing output folder changed"; fail=1; fi
+}
+
+sed 's/set Thickness    = 10/set Thicknes    = 10/' "$base" > "$work/unknown.prm"
+expect unknown_entry "Thicknes" "$work/unknown.prm"
+sed 's/set Thickness    = 10/set Thickness    = ten/' "$base" > "$work/type.prm"
+expect wrong_type "Thickness" "$work/type.prm"
+expect unknown_override "Geometry/Thicknes" "$base" --set "Geometry/Thicknes=1"
+expect zero_thickness "Geometry/Thickness" "$base" --set "Geometry/Thickness=0"
+expect negative_thickness "Geometry/Thickness" "$base" --set "Geometry/Thickness=-1"
+expect missing_mesh "no-such-blank.msh" "$base" --set "Geometry/Blank shape=gmsh" \
+  --set "Geometry/Mesh file=no-such-blank.msh"
+expect missing_input "does-not-exist.prm" "$work/does-not-exist.prm"
+expect blank_inside_tool "Tools/Punch" "$base" --set "Tools/Punch/Gap=-0.5"
+expect zero_time_step "Time stepping/Time step" "$base" --set "Time stepping/Time step=0"
+expect negative_time_step "Time stepping/Time step" "$base" --set "Time stepping/Time step=-1"
+touch "$work/a-file"
+expect unwritable_output "Output/Output directory" "$base" --set "Output/Output directory=$work/a-file/results"
+exit $fail

@@ -1,0 +1,12 @@
+"""Blank volume conserved within 0.1 % over the run (initial: pi/4 d^2 t)."""
+import csv, math, sys
+
+rows = list(csv.DictReader(open(sys.argv[1] + "/history.csv")))
+# The quarter-disk planform is refined as a polygon; its initial area is that of
+# the discrete mesh, so compare against the first step and the disk alike.
+v_disk = math.pi / 4 * 77.0**2 * 0.78
+vols = [float(r["volume"]) for r in rows]
+drift = max(abs(v / vols[0] - 1) for v in vols)
+print(f"volume: first {vols[0]:.3f}, last {vols[-1]:.3f} mm^3, disk {v_disk:.3f}; drift {drift:.2e}")
+assert abs(vols[0] / v_disk - 1) < 0.02, "initial volume far from the blank's"
+sys.exit(0 if drift < 1e-3 else 1)
