@@ -36,7 +36,8 @@ namespace formsolve
           out.viscosity         = s / (3. * cutoff);
           out.flow_stress       = s * rate / cutoff;
           out.deviatoric_stress = 2. * out.viscosity * e;
-          out.tangent           = 2. * out.viscosity * deviator_tensor<dim>();
+          out.strain_rate_deviator = e;
+          out.beta                 = 0;
           return out;
         }
 
@@ -47,13 +48,12 @@ namespace formsolve
       const double ds =
         dt * law.d_strain(strain, rate) + law.d_rate(strain, rate);
 
-      out.flow_stress       = s;
-      out.viscosity         = s / (3. * rate);
-      out.deviatoric_stress = 2. * out.viscosity * e;
-      out.tangent           = 2. * out.viscosity * deviator_tensor<dim>();
-      if (newton)
-        out.tangent += (4. / 9.) * (ds * rate - s) / (rate * rate * rate) *
-                       outer_product(e, e);
+      out.flow_stress          = s;
+      out.viscosity            = s / (3. * rate);
+      out.deviatoric_stress    = 2. * out.viscosity * e;
+      out.strain_rate_deviator = e;
+      out.beta =
+        newton ? (4. / 9.) * (ds * rate - s) / (rate * rate * rate) : 0.;
       return out;
     }
 

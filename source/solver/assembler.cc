@@ -64,11 +64,15 @@ namespace formsolve
 
       FullMatrix<double>                   K(n, n);
       Vector<double>                       r(n);
-      std::vector<SymmetricTensor<2, dim>> B(n), CB(n), D(full.size());
-      std::vector<double>                  div(n), div_v(reduced.size());
+      std::vector<SymmetricTensor<2, dim>> D(full.size());
+      std::vector<Tensor<1, dim>>          g(n);
+      std::vector<unsigned int>            comp(n);
+      std::vector<double> tr(n), s(n), div(n), div_v(reduced.size());
       std::vector<types::global_dof_index> dofs(n);
       const double                         Kv     = material.bulk_viscosity();
       double                               f_int2 = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        comp[i] = fe.system_to_component_index(i).first;
 
       if (matrix)
         *matrix = 0;
@@ -85,21 +89,39 @@ namespace formsolve
             const auto h = history.get_data(cell);
             for (unsigned int q = 0; q < full.size(); ++q)
               {
-                const auto response =
+                const auto m =
                   material.evaluate(D[q], h[q]->strain, dt, newton);
                 const double JxW = fv.JxW(q);
+                // Shape function i has one component c_i and gradient g_i, so
+                // B_i = sym(e_c (x) g_i): B_i:B_j, tr B_i and D':B_i reduce to
+                // products of vector entries.
                 for (unsigned int i = 0; i < n; ++i)
                   {
-                    B[i] = fv[velocity].symmetric_gradient(i, q);
-                    r[i] += (response.deviatoric_stress * B[i]) * JxW;
+                    g[i]       = fv.shape_grad(i, q);
+                    tr[i]      = g[i][comp[i]];
+                    double sig = 0, dev = 0;
+                    for (unsigned int k = 0; k < dim; ++k)
+                      {
+                        sig += m.deviatoric_stress[comp[i]][k] * g[i][k];
+                        dev += m.strain_rate_deviator[comp[i]][k] * g[i][k];
+                      }
+                    s[i] = dev;
+                    r[i] += sig * JxW;
                   }
                 if (matrix)
                   {
-                    for (unsigned int j = 0; j < n; ++j)
-                      CB[j] = response.tangent * B[j];
+                    // d s'/dD = 2 mu P_dev + beta D' (x) D'  (doc/theory.md,
+                    // eq. 4)
+                    const double mu = m.viscosity * JxW, beta = m.beta * JxW;
                     for (unsigned int i = 0; i < n; ++i)
-                      for (unsigned int j = 0; j < n; ++j)
-                        K(i, j) += (B[i] * CB[j]) * JxW;
+                      for (unsigned int j = 0; j <= i; ++j)
+                        {
+                          const double BB =
+                            0.5 * ((comp[i] == comp[j] ? g[i] * g[j] : 0.) +
+                                   g[i][comp[j]] * g[j][comp[i]]);
+                          K(i, j) += 2. * mu * (BB - tr[i] * tr[j] / 3.) +
+                                     beta * s[i] * s[j];
+                        }
                   }
               }
             // Incompressibility by penalty, reduced integration against
@@ -110,14 +132,18 @@ namespace formsolve
                 const double JxW = fr.JxW(q);
                 for (unsigned int i = 0; i < n; ++i)
                   {
-                    div[i] = fr[velocity].divergence(i, q);
+                    div[i] = fr.shape_grad(i, q)[comp[i]];
                     r[i] += Kv * div_v[q] * div[i] * JxW;
                   }
                 if (matrix)
                   for (unsigned int i = 0; i < n; ++i)
-                    for (unsigned int j = 0; j < n; ++j)
+                    for (unsigned int j = 0; j <= i; ++j)
                       K(i, j) += Kv * div[i] * div[j] * JxW;
               }
+            if (matrix)
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = i + 1; j < n; ++j)
+                  K(i, j) = K(j, i);
             f_int2 += r.norm_sqr();
             cell->get_dof_indices(dofs);
             if (matrix)

@@ -6,6 +6,13 @@
 
 #include <formsolve/solver/linear_solver.h>
 
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
+#include <Epetra_LinearProblem.h>
+
+#include <cstdlib>
+
 namespace formsolve
 {
   namespace solver

@@ -13,14 +13,18 @@ namespace formsolve
 
     /// Stress and tangent at one quadrature point for a given strain rate,
     /// with the strain integrated implicitly: eps = eps_n + dt * rate.
+    /// The tangent d(deviatoric stress)/dD = 2 mu P_dev + beta D' (x) D' is
+    /// returned by its two scalars, which lets the assembler form element
+    /// matrices without fourth-order tensors.
     template <int dim>
     struct PointResponse
     {
       SymmetricTensor<2, dim> deviatoric_stress;
-      SymmetricTensor<4, dim> tangent; // d(deviatoric stress)/d(strain rate)
+      SymmetricTensor<2, dim> strain_rate_deviator; // D'
       double                  equivalent_strain_rate;
       double                  flow_stress;
-      double                  viscosity; // mu: s' = 2 mu dev(D)
+      double                  viscosity; // mu: s' = 2 mu D'
+      double                  beta;      // 0 for the secant tangent
     };
 
     template <int dim>

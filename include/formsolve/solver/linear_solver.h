@@ -6,7 +6,11 @@
 
 #include <formsolve/parameters/parameters.h>
 
+#include <memory>
 #include <vector>
+
+class Amesos_BaseSolver;
+class Epetra_LinearProblem;
 
 namespace formsolve
 {
