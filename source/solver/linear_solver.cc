@@ -8,8 +8,8 @@
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
-#include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
+#include <Epetra_MultiVector.h>
 
 #include <cstdlib>
 
@@ -25,19 +25,41 @@ namespace formsolve
         , constant_modes(modes)
     {}
 
-    unsigned int
-    LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
-                        TrilinosWrappers::MPI::Vector        &x,
-                        const TrilinosWrappers::MPI::Vector  &b) const
+    LinearSolver::~LinearSolver() = default;
+
+    unsigned int LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
+                                     TrilinosWrappers::MPI::Vector        &x,
+                                     const TrilinosWrappers::MPI::Vector  &b)
     {
       if (prm.type == "direct")
         {
-          SolverControl                                  control(1, 0);
-          TrilinosWrappers::SolverDirect::AdditionalData data(
-            false,
-            prm.direct_solver == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
-          TrilinosWrappers::SolverDirect direct(control, data);
-          direct.solve(A, x, b);
+          auto &matrix = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
+          if (factorised_matrix != &matrix ||
+              factorised_nnz != A.n_nonzero_elements())
+            {
+              problem = std::make_unique<Epetra_LinearProblem>();
+              problem->SetOperator(&matrix);
+              Amesos factory;
+              direct.reset(factory.Create(prm.direct_solver == "MUMPS"
+                                            ? "Amesos_Mumps"
+                                            : "Amesos_Klu",
+                                          *problem));
+              AssertThrow(direct != nullptr,
+                          ExcMessage(
+                            "Linear solver/Direct solver: Amesos has no " +
+                            prm.direct_solver));
+              AssertThrow(direct->SymbolicFactorization() == 0,
+                          ExcMessage("symbolic factorisation failed"));
+              factorised_matrix = &matrix;
+              factorised_nnz    = A.n_nonzero_elements();
+            }
+          problem->SetLHS(&x.trilinos_vector());
+          problem->SetRHS(
+            const_cast<Epetra_MultiVector *>(&b.trilinos_vector()));
+          AssertThrow(direct->NumericFactorization() == 0,
+                      ExcMessage(
+                        "numeric factorisation failed (singular matrix?)"));
+          AssertThrow(direct->Solve() == 0, ExcMessage("direct solve failed"));
           return 1;
         }
 

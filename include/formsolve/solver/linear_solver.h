@@ -22,16 +22,23 @@ namespace formsolve
       /// @p constant_modes: the rigid translations per component, for AMG.
       LinearSolver(const parameters::LinearSolver       &p,
                    const std::vector<std::vector<bool>> &constant_modes);
+      ~LinearSolver();
 
       /// Solves A x = b; returns the iteration count (1 for direct solves).
-      /// Throws with a message when the solver fails.
+      /// Throws with a message when the solver fails. Direct solves keep the
+      /// symbolic factorisation (ordering) while the matrix object and its
+      /// sparsity stay the same; only the numeric factorisation is redone.
       unsigned int solve(const dealii::TrilinosWrappers::SparseMatrix &A,
                          dealii::TrilinosWrappers::MPI::Vector        &x,
-                         const dealii::TrilinosWrappers::MPI::Vector  &b) const;
+                         const dealii::TrilinosWrappers::MPI::Vector  &b);
 
     private:
-      parameters::LinearSolver       prm;
-      std::vector<std::vector<bool>> constant_modes;
+      parameters::LinearSolver              prm;
+      std::vector<std::vector<bool>>        constant_modes;
+      std::unique_ptr<Epetra_LinearProblem> problem;
+      std::unique_ptr<Amesos_BaseSolver>    direct;
+      const void                           *factorised_matrix = nullptr;
+      unsigned long long                    factorised_nnz    = 0;
     };
   } // namespace solver
 } // namespace formsolve
