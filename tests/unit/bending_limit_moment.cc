@@ -169,9 +169,9 @@ namespace
     material::RigidViscoplastic<3>          material;
     solver::Assembler<3>                    assembler;
     solver::HistoryStorage<3>               history;
-    solver::LinearSolver                    linear;
     solver::MatrixType                      matrix;
     VectorType                              residual, ghost;
+    solver::LinearSolver                    linear;
     double                                  scale = 0;
   };
 } // namespace

@@ -28,6 +28,7 @@ namespace formsolve
       /// Throws with a message when the solver fails. Direct solves keep the
       /// symbolic factorisation (ordering) while the matrix object and its
       /// sparsity stay the same; only the numeric factorisation is redone.
+      /// The solver refers to @p A until destroyed: destroy it first.
       unsigned int solve(const dealii::TrilinosWrappers::SparseMatrix &A,
                          dealii::TrilinosWrappers::MPI::Vector        &x,
                          const dealii::TrilinosWrappers::MPI::Vector  &b);
