@@ -35,9 +35,11 @@ namespace formsolve
             msh = (std::filesystem::temp_directory_path() /
                    ("formsolve-" + std::to_string(::getpid()) + ".msh"))
                     .string();
-            const std::string cmd = std::string(DEAL_II_GMSH_EXECUTABLE_PATH) +
-                                    " -2 -format msh2 -v 0 '" + file +
-                                    "' -o '" + msh + "' > /dev/null 2>&1";
+            const std::string cmd =
+              std::string(DEAL_II_GMSH_EXECUTABLE_PATH) +
+              " -2 -format msh2 -v 0 -setnumber Mesh.RecombineAll 1 "
+              "-setnumber Mesh.SubdivisionAlgorithm 1 '" +
+              file + "' -o '" + msh + "' > /dev/null 2>&1";
             AssertThrow(std::system(cmd.c_str()) == 0 &&
                           std::ifstream(msh).good(),
                         ExcMessage("Geometry/Mesh file: gmsh could not mesh '" +
@@ -59,6 +61,10 @@ namespace formsolve
                         ExcMessage("Geometry/Mesh file: '" + file +
                                    "' is not a 2-D quadrilateral gmsh mesh"));
           }
+        AssertThrow(planform.n_active_cells() > 0 &&
+                      planform.all_reference_cells_are_hyper_cube(),
+                    ExcMessage("Geometry/Mesh file: '" + file +
+                               "' must be a 2-D mesh of quadrilaterals only"));
         if (msh != file)
           std::filesystem::remove(msh);
       }

@@ -67,7 +67,7 @@ namespace formsolve
         "",
         Anything(),
         "For 'gmsh': a 2-D quadrilateral planform mesh (.msh) or a gmsh "
-        "geometry (.geo, meshed on reading with recombined quads); it is "
+        "geometry (.geo, meshed on reading by gmsh into quadrilaterals); it is "
         "extruded through the thickness. Relative paths are taken from "
         "the working directory.");
       prm.declare_entry(
@@ -486,10 +486,12 @@ namespace formsolve
                         "60",
                         Integer(1),
                         "Newton iterations per step before the step fails.");
-      prm.declare_entry("Residual tolerance",
-                        "1e-6",
-                        Double(0),
-                        "Converged when |r| <= tol * max(|r_0|, |f_int|) (-).");
+      prm.declare_entry(
+        "Residual tolerance",
+        "1e-6",
+        Double(0),
+        "Converged when |r| <= tol * |f_int|, the norm of the element "
+        "internal-force vectors (-) ...");
       prm.declare_entry("Correction tolerance",
                         "1e-6",
                         Double(0),
@@ -499,7 +501,8 @@ namespace formsolve
         "Max line search steps",
         "6",
         Integer(0, 30),
-        "Halvings of the Newton step while the residual grows.");
+        "Trial step lengths per Newton iteration: regula falsi on the "
+        "directional derivative dv.r(v + alpha dv) of the potential.");
       prm.declare_entry(
         "Picard iterations",
         "0",
@@ -509,8 +512,8 @@ namespace formsolve
         "Picard fallback",
         "true",
         Bool(),
-        "Switch to direct iteration for the rest of the step when a "
-        "Newton step fails to reduce the residual.");
+        "When the line search fails, do three direct (secant) iterations, "
+        "then return to Newton.");
       prm.declare_entry("Log iterations",
                         "false",
                         Bool(),

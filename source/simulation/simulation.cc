@@ -13,6 +13,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -387,8 +388,23 @@ namespace formsolve
       {
         Utilities::System::MemoryStats m;
         Utilities::System::get_memory_stats(m);
-        summary.peak_memory_kb = Utilities::MPI::max(double(m.VmHWM), comm);
+        summary.peak_memory_kb = Utilities::MPI::sum(double(m.VmHWM), comm);
       }
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          // Machine-readable totals for benchmarks (doc/performance.md).
+          std::ofstream f(prm.output.directory + "/run-summary.txt");
+          f << "ranks = " << Utilities::MPI::n_mpi_processes(comm)
+            << "\ndofs = " << summary.n_dofs
+            << "\ncells = " << tria.n_global_active_cells()
+            << "\nsteps = " << summary.steps
+            << "\nnewton_iterations = " << summary.newton_iterations
+            << "\nlinear_iterations = " << summary.linear_iterations
+            << "\nwall_time = " << summary.wall_time
+            << "\nnewton_wall_time = " << summary.newton_wall_time
+            << "\npeak_memory_kb_all_ranks = " << summary.peak_memory_kb
+            << "\n";
+        }
       pcout << "done: " << step << " steps, " << summary.newton_iterations
             << " Newton iterations, " << summary.linear_iterations
             << " linear iterations, " << summary.wall_time << " s; results in "

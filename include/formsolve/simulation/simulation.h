@@ -36,7 +36,7 @@ namespace formsolve
       double       wall_time         = 0;
       double       newton_wall_time  = 0; // spent inside Newton iterations
       double       n_dofs            = 0;
-      double       peak_memory_kb    = 0; // max over ranks, resident set
+      double       peak_memory_kb = 0; // peak resident set, summed over ranks
     };
 
     template <int dim>
