@@ -39,7 +39,10 @@ int main(int argc, char **argv)
       run.parse(prm);
       run.validate();
       formsolve::simulation::Simulation<3> simulation(run, prm);
-      simulation.run();
+      if (cl.validate)
+        simulation.validate_scene();
+      else
+        simulation.run();
     }
   catch (const ExceptionBase &e)
     {

@@ -2,6 +2,7 @@
 
 #include <formsolve/parameters/command_line.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -21,6 +22,10 @@ namespace formsolve
              "default\n"
              "                               parameter file to standard "
              "output\n"
+             "  --validate                   check the input (parameters, "
+             "mesh, initial\n"
+             "                               position of the tools) and stop; "
+             "writes nothing\n"
              "  --set \"Subsection/Entry=value\"\n"
              "                               override one entry after reading "
              "the file\n"
@@ -38,6 +43,8 @@ namespace formsolve
             cl.help = true;
           else if (a == "--print-parameters")
             cl.print_parameters = true;
+          else if (a == "--validate")
+            cl.validate = true;
           else if (a == "--set" || a.rfind("--set=", 0) == 0)
             {
               std::string s;
@@ -81,15 +88,23 @@ namespace formsolve
         AssertThrow(in.good(),
                     ExcMessage("cannot open input file " + cl.input_file));
       }
+      // 'include' lines are resolved relative to the including file: parse
+      // from its folder. Other paths (mesh, output) stay relative to the
+      // working directory; they are only used after parsing.
+      const auto cwd  = std::filesystem::current_path();
+      const auto path = std::filesystem::absolute(cl.input_file);
       try
         {
-          prm.parse_input(cl.input_file,
+          std::filesystem::current_path(path.parent_path());
+          prm.parse_input(path.filename().string(),
                           "",
                           /*skip_undefined=*/false,
                           /*assert_mandatory_entries_are_found=*/false);
+          std::filesystem::current_path(cwd);
         }
       catch (const dealii::ExceptionBase &e)
         {
+          std::filesystem::current_path(cwd);
           std::ostringstream s;
           e.print_info(s);
           AssertThrow(false,

@@ -238,6 +238,16 @@ namespace formsolve
     }
 
     template <int dim>
+    void Simulation<dim>::validate_scene()
+    {
+      setup_mesh_and_dofs();
+      check_initial_scene();
+      pcout << "input valid: " << tria.n_global_active_cells() << " cells, "
+            << dof_handler.n_dofs() << " DoFs, " << tools.size() << " tool(s)"
+            << std::endl;
+    }
+
+    template <int dim>
     RunSummary Simulation<dim>::run()
     {
       using Clock        = std::chrono::steady_clock;

@@ -18,6 +18,7 @@ namespace formsolve
       std::vector<std::pair<std::string, std::string>> overrides;
       bool                                             help             = false;
       bool                                             print_parameters = false;
+      bool                                             validate         = false;
 
       /// Throws dealii::ExcMessage naming the bad argument.
       static CommandLine parse(int argc, char **argv);

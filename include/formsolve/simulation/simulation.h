@@ -50,6 +50,9 @@ namespace formsolve
       /// Throws with a clear message when a step fails.
       RunSummary run();
 
+      /// Build the mesh and check the initial scene, then stop (--validate).
+      void validate_scene();
+
     private:
       using VectorType = dealii::TrilinosWrappers::MPI::Vector;
 
