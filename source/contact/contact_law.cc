@@ -20,12 +20,17 @@ namespace formsolve
     {
       NodalContactForce<dim> out;
       out.normal_force = 0;
-      if (!pair.active)
+      if (!pair.active && !pair.locked)
         return out;
       const Tensor<1, dim> &n = pair.normal;
-      out.normal_force        = -epsilon * pair.predicted_gap;
-      out.force               = out.normal_force * n;
-      out.stiffness           = epsilon * dt * outer_product(n, n);
+      // A locked pair keeps the penalty stiffness in the tangent while it is
+      // open, but carries no force: the equations stay those of the contact
+      // law, only the Newton matrix is held fixed (chatter guard).
+      out.stiffness = epsilon * dt * outer_product(n, n);
+      if (!pair.active)
+        return out;
+      out.normal_force = -epsilon * pair.predicted_gap;
+      out.force        = out.normal_force * n;
       if (mu == 0)
         return out;
 

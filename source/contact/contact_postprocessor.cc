@@ -17,10 +17,12 @@ namespace formsolve
 
     template <int dim>
     ContactPostprocessor<dim>::ContactPostprocessor(
-      const double search_distance,
-      const double v0)
+      const double       search_distance,
+      const double       v0,
+      const unsigned int max_status_flips)
         : search_distance(search_distance)
         , v0(v0)
+        , max_status_flips(max_status_flips)
     {}
 
     template <int dim>
@@ -142,6 +144,30 @@ namespace formsolve
               set.pairs.push_back(pair);
             }
         }
+
+      // Chatter guard: count status changes per pair within the step; once a
+      // pair has changed max_status_flips times it is locked: its status no
+      // longer counts as a change and its stiffness stays in the tangent
+      // (contact_law.cc), while its force still follows the contact law.
+      const unsigned int n = set.pairs.size();
+      if (set.flips.size() != n)
+        {
+          set.flips.assign(n, 0);
+          set.locked.assign(n, -1);
+          set.previous_active.resize(n);
+          for (unsigned int k = 0; k < n; ++k)
+            set.previous_active[k] = set.pairs[k].active;
+          return;
+        }
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          auto &pair = set.pairs[k];
+          if (set.locked[k] < 0 && pair.active != set.previous_active[k] &&
+              ++set.flips[k] >= max_status_flips)
+            set.locked[k] = 1;
+          pair.locked            = set.locked[k] >= 0;
+          set.previous_active[k] = pair.active;
+        }
     }
 
     template <int dim>
@@ -154,10 +180,13 @@ namespace formsolve
     {
       ContactStatistics<dim> s;
       s.tool_force.resize(tools.size());
+      s.tool_max_penetration.assign(tools.size(), 0.);
       double sum_penetration = 0;
       for (unsigned int k = 0; k < set.pairs.size(); ++k)
         {
           const auto &pair = set.pairs[k];
+          if (set.locked.size() == set.pairs.size() && set.locked[k] >= 0)
+            ++s.n_locked;
           if (!pair.active)
             continue;
           const auto f =
@@ -169,19 +198,25 @@ namespace formsolve
                                    false);
           s.tool_force[pair.tool] -= f.force;
           ++s.n_active;
-          const double p    = -pair.predicted_gap;
-          s.max_penetration = std::max(s.max_penetration, p);
+          const double p = std::max(0., -pair.predicted_gap);
+          s.tool_max_penetration[pair.tool] =
+            std::max(s.tool_max_penetration[pair.tool], p);
           sum_penetration += p;
-          ++s.n_penetrating;
+          s.n_over_allowed += p > tools.allowed_penetration(pair.tool);
         }
-      for (auto &f : s.tool_force)
-        f = Utilities::MPI::sum(f, comm);
-      s.max_penetration = Utilities::MPI::max(s.max_penetration, comm);
-      sum_penetration   = Utilities::MPI::sum(sum_penetration, comm);
-      s.n_active        = Utilities::MPI::sum(s.n_active, comm);
-      s.n_penetrating   = Utilities::MPI::sum(s.n_penetrating, comm);
-      s.mean_penetration =
-        s.n_penetrating > 0 ? sum_penetration / s.n_penetrating : 0.;
+      for (unsigned int t = 0; t < tools.size(); ++t)
+        {
+          s.tool_force[t] = Utilities::MPI::sum(s.tool_force[t], comm);
+          s.tool_max_penetration[t] =
+            Utilities::MPI::max(s.tool_max_penetration[t], comm);
+          s.max_penetration =
+            std::max(s.max_penetration, s.tool_max_penetration[t]);
+        }
+      sum_penetration    = Utilities::MPI::sum(sum_penetration, comm);
+      s.n_active         = Utilities::MPI::sum(s.n_active, comm);
+      s.n_over_allowed   = Utilities::MPI::sum(s.n_over_allowed, comm);
+      s.n_locked         = Utilities::MPI::sum(s.n_locked, comm);
+      s.mean_penetration = s.n_active > 0 ? sum_penetration / s.n_active : 0.;
       return s;
     }
 

@@ -315,6 +315,12 @@ namespace formsolve
         Double(0),
         "Fixed contact penalty for this tool (N/mm^3, contact pressure "
         "per mm of penetration); 0 takes Contact/Penalty factor.");
+      prm.declare_entry(
+        "Allowed penetration",
+        str(d.allowed_penetration),
+        Double(0),
+        "Adaptive penalty: allowed penetration delta into this tool (mm); "
+        "0 takes Contact/Allowed penetration.");
       prm.leave_subsection();
     }
 
@@ -333,6 +339,7 @@ namespace formsolve
       speed                = prm.get_double("Speed");
       friction_coefficient = prm.get_double("Friction coefficient");
       penalty_factor       = prm.get_double("Penalty factor");
+      allowed_penetration  = prm.get_double("Allowed penetration");
       prm.leave_subsection();
     }
 
@@ -365,10 +372,22 @@ namespace formsolve
     void Tools::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Tools");
-      Tool p{"Punch", true, "round", 40, 40, 40, 8, 8, 0, 15, 1, 0.1, 0};
-      Tool d{"Die", true, "round", 42.5, 42.5, 42.5, 8, 8, 0, 0, 0, 0.1, 0};
-      Tool
-        b{"Blank holder", true, "round", 58.5, 0, 0, 0, 0, 0.05, 0, 0, 0.1, 0};
+      Tool p{"Punch", true, "round", 40, 40, 40, 8, 8, 0, 15, 1, 0.1, 0, 0};
+      Tool d{"Die", true, "round", 42.5, 42.5, 42.5, 8, 8, 0, 0, 0, 0.1, 0, 0};
+      Tool b{"Blank holder",
+             true,
+             "round",
+             58.5,
+             0,
+             0,
+             0,
+             0,
+             0.05,
+             0,
+             0,
+             0.1,
+             0,
+             0};
       Tool::declare(prm, p);
       Tool::declare(prm, d);
       Tool::declare(prm, b);
@@ -404,15 +423,66 @@ namespace formsolve
       prm.declare_entry(
         "Penalty strategy",
         "fixed",
-        Selection("fixed"),
-        "How penalty factors are chosen. fixed: 'Penalty factor' "
-        "(or the tool's own) times the nodal contact area.");
+        Selection("fixed|adaptive|adaptive-strict"),
+        "How penalty factors are chosen. fixed: 'Penalty factor' (or the "
+        "tool's own) times the nodal contact area. adaptive: per contact "
+        "pair and Newton iteration from the current system, so that the "
+        "penetration is about 'Allowed penetration' (doc/theory.md). "
+        "adaptive-strict: adaptive, and a converged step with a penetration "
+        "above the allowed one is solved again with those factors scaled up.");
       prm.declare_entry(
         "Penalty factor",
         "1e5",
         Double(),
         "Fixed penalty (N/mm^3): contact pressure per mm of "
         "penetration. Each node gets this times its contact area.");
+      prm.declare_entry("Allowed penetration",
+                        "1e-3",
+                        Double(),
+                        "delta (mm): penetration the adaptive strategies aim "
+                        "at (adaptive) or bound (adaptive-strict).");
+      prm.declare_entry("Lower bound",
+                        "1e-3",
+                        Double(0),
+                        "Adaptive: eps_k >= this * K_kk/dt, K_kk the tangent "
+                        "diagonal of the node along the tool normal (-).");
+      prm.declare_entry("Upper bound",
+                        "1e4",
+                        Double(0),
+                        "Adaptive: eps_k <= this * K_kk/dt (-).");
+      prm.declare_entry(
+        "Adaptive estimate",
+        "force",
+        Selection("force|projection"),
+        "projection: eps_k = n.(r + K dv)_k / delta, the published method "
+        "with the node moved to penetration delta (dv) through the tangent "
+        "K; force: its limit dv -> 0, eps_k = n.r_k / delta, the normal "
+        "force the node carries divided by delta. In the flow formulation "
+        "the tangent of rigid zones is a cutoff viscosity, not a stiffness, "
+        "and projection overestimates by orders of magnitude "
+        "(doc/contact.md).");
+      prm.declare_entry(
+        "Damping",
+        "10",
+        Double(1),
+        "Adaptive: a factor may change by at most this ratio "
+        "per estimate; the first estimate starts from the fixed "
+        "penalty (-).");
+      prm.declare_entry(
+        "Freeze factors",
+        "false",
+        Bool(),
+        "Adaptive: stop updating the factors in a step once the "
+        "contact set is unchanged between two iterations.");
+      prm.declare_entry("Max status flips",
+                        "4",
+                        Integer(1),
+                        "Contact status changes of one node in one step after "
+                        "which its status is locked for the rest of the step.");
+      prm.declare_entry("Max strict passes",
+                        "5",
+                        Integer(0),
+                        "adaptive-strict: re-solves of one step at most.");
       prm.declare_entry("Friction regularisation velocity",
                         "1e-3",
                         Double(),
@@ -430,8 +500,16 @@ namespace formsolve
     void Contact::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
-      penalty_strategy = prm.get("Penalty strategy");
-      penalty_factor   = prm.get_double("Penalty factor");
+      penalty_strategy    = prm.get("Penalty strategy");
+      penalty_factor      = prm.get_double("Penalty factor");
+      allowed_penetration = prm.get_double("Allowed penetration");
+      lower_bound         = prm.get_double("Lower bound");
+      upper_bound         = prm.get_double("Upper bound");
+      freeze              = prm.get_bool("Freeze factors");
+      adaptive_estimate   = prm.get("Adaptive estimate");
+      damping             = prm.get_double("Damping");
+      max_status_flips    = prm.get_integer("Max status flips");
+      max_strict_passes   = prm.get_integer("Max strict passes");
       regularisation_velocity =
         prm.get_double("Friction regularisation velocity");
       search_distance = prm.get_double("Search distance");
@@ -443,6 +521,12 @@ namespace formsolve
       require(penalty_factor > 0,
               "Contact/Penalty factor",
               "must be positive (N/mm^3), got " + str(penalty_factor));
+      require(allowed_penetration > 0,
+              "Contact/Allowed penetration",
+              "must be positive (mm), got " + str(allowed_penetration));
+      require(upper_bound > lower_bound,
+              "Contact/Upper bound",
+              "must exceed Contact/Lower bound");
       require(regularisation_velocity > 0,
               "Contact/Friction regularisation velocity",
               "must be positive (mm/s)");

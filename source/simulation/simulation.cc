@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace formsolve
@@ -42,7 +43,8 @@ namespace formsolve
         , assembler(material, reference_mapping, run.mesh.degree)
         , tools(run.tools, run.contact, run.geometry.thickness)
         , contact_post(run.contact.search_distance,
-                       run.contact.regularisation_velocity)
+                       run.contact.regularisation_velocity,
+                       run.contact.max_status_flips)
         , estimator(contact::create_penalty_estimator<dim>(run.contact))
     {}
 
@@ -83,7 +85,10 @@ namespace formsolve
       SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
       matrix.reinit(owned, owned, dsp, comm);
 
+      if (estimator->needs_system())
+        body_matrix.reinit(matrix);
       residual.reinit(owned, comm);
+      body_residual.reinit(owned, comm);
       velocity.reinit(owned, comm);
       displacement.reinit(owned, comm);
       contact_fields.reinit(owned, comm);
@@ -163,23 +168,78 @@ namespace formsolve
                               velocity_ghost,
                               dt,
                               contact_set);
-        estimator->estimate(contact_set, tools, epsilon);
       }
+      // Body first: an adaptive estimator reads its residual and tangent;
+      // then the factors, then the contact terms with them.
+      {
+        TimerOutput::Scope t(timer, "assembly");
+        f_scale = assembler.assemble_body(dof_handler,
+                                          *mapping,
+                                          constraints,
+                                          velocity_ghost,
+                                          history,
+                                          dt,
+                                          newton,
+                                          &matrix,
+                                          residual);
+      }
+      bool estimate = true;
+      if (estimator->needs_system())
+        {
+          // Keep the body system for update_penalty(); estimate here only when
+          // there are no factors for these pairs yet.
+          body_matrix.copy_from(matrix);
+          body_residual = residual;
+          // The estimate is collective: decide on all ranks alike.
+          estimate =
+            Utilities::MPI::max(int(epsilon.size() != contact_set.pairs.size()),
+                                comm) != 0;
+        }
+      if (estimate)
+        {
+          TimerOutput::Scope t(timer, "penalty estimate");
+          estimator->estimate(
+            contact_set,
+            tools,
+            contact::SystemView{&residual, &matrix, &constraints, dt},
+            epsilon);
+        }
+      last_newton = newton;
       TimerOutput::Scope        t(timer, "assembly");
       solver::ContactInput<dim> contact{&contact_set,
                                         &epsilon,
                                         &tools,
                                         prm.contact.regularisation_velocity};
-      f_scale = assembler.assemble(dof_handler,
-                                   *mapping,
-                                   constraints,
-                                   velocity_ghost,
-                                   history,
-                                   dt,
-                                   contact,
-                                   newton,
-                                   &matrix,
-                                   residual);
+      assembler
+        .add_contact(constraints, dt, contact, newton, &matrix, residual);
+      return residual.l2_norm();
+    }
+
+    template <int dim>
+    double Simulation<dim>::update_penalty()
+    {
+      if (!estimator->needs_system())
+        return -1;
+      {
+        TimerOutput::Scope t(timer, "penalty estimate");
+        estimator->estimate(
+          contact_set,
+          tools,
+          contact::SystemView{&body_residual, &body_matrix, &constraints, dt},
+          epsilon);
+      }
+      TimerOutput::Scope t(timer, "assembly");
+      matrix.copy_from(body_matrix);
+      residual = body_residual;
+      // The copy leaves the vector in 'insert' mode; settle it on every rank
+      // now, before ranks with and without contact pairs start adding.
+      residual.compress(VectorOperation::insert);
+      solver::ContactInput<dim> contact{&contact_set,
+                                        &epsilon,
+                                        &tools,
+                                        prm.contact.regularisation_velocity};
+      assembler
+        .add_contact(constraints, dt, contact, last_newton, &matrix, residual);
       return residual.l2_norm();
     }
 
@@ -198,8 +258,9 @@ namespace formsolve
     bool Simulation<dim>::contact_set_changed()
     {
       std::vector<bool> active(contact_set.pairs.size());
+      // Locked pairs (chatter guard) do not count as changes.
       for (unsigned int k = 0; k < active.size(); ++k)
-        active[k] = contact_set.pairs[k].active;
+        active[k] = contact_set.pairs[k].active || contact_set.pairs[k].locked;
       const int changed = (active != last_active);
       last_active       = active;
       return Utilities::MPI::max(changed, comm) != 0;
@@ -280,6 +341,14 @@ namespace formsolve
       columns.insert(
         columns.end(),
         {"volume", "mean_penetration", "active_contacts", "picard_iterations"});
+      for (unsigned int t = 0; t < tools.size(); ++t)
+        columns.push_back("max_penetration_" + tools.key(t));
+      columns.insert(columns.end(),
+                     {"pairs_over_allowed",
+                      "locked_pairs",
+                      "strict_passes",
+                      "min_penalty",
+                      "max_penalty"});
       HistoryFile            history_file(prm.output.directory + "/history.csv",
                                columns,
                                Utilities::MPI::this_mpi_process(comm) == 0);
@@ -319,8 +388,25 @@ namespace formsolve
           }
           constraints.distribute(
             velocity); // previous step's velocity: predictor
-          const double newton_start = seconds();
-          const auto   report       = newton.solve(*this, velocity);
+          const double         newton_start = seconds();
+          solver::NewtonReport report;
+          unsigned int         passes = 0;
+          for (;; ++passes)
+            {
+              // A pass starts with fresh status memory (chatter guard).
+              contact_set.begin_step();
+              const auto r     = newton.solve(*this, velocity);
+              report.converged = r.converged;
+              report.failure   = r.failure;
+              report.residual  = r.residual;
+              report.iterations += r.iterations;
+              report.linear_iterations += r.linear_iterations;
+              report.picard_iterations += r.picard_iterations;
+              // adaptive-strict: solve again while a node is deeper than delta.
+              if (!r.converged || passes >= prm.contact.max_strict_passes ||
+                  !estimator->finish_step(contact_set, tools, comm))
+                break;
+            }
           summary.newton_wall_time += seconds() - newton_start;
           if (!report.converged)
             {
@@ -376,6 +462,23 @@ namespace formsolve
                       stats.mean_penetration,
                       double(stats.n_active),
                       double(report.picard_iterations)});
+          for (unsigned int t = 0; t < tools.size(); ++t)
+            row.push_back(stats.tool_max_penetration[t]);
+          double eps_min = std::numeric_limits<double>::max(), eps_max = 0;
+          for (unsigned int k = 0; k < contact_set.pairs.size(); ++k)
+            if (contact_set.pairs[k].active)
+              {
+                eps_min = std::min(eps_min, epsilon[k]);
+                eps_max = std::max(eps_max, epsilon[k]);
+              }
+          eps_min = Utilities::MPI::min(eps_min, comm);
+          eps_max = Utilities::MPI::max(eps_max, comm);
+          row.insert(row.end(),
+                     {double(stats.n_over_allowed),
+                      double(stats.n_locked),
+                      double(passes),
+                      stats.n_active > 0 ? eps_min : 0.,
+                      eps_max});
           history_file.write_row(row);
 
           const double left = wall / travel * (stroke - travel);

@@ -52,6 +52,81 @@ namespace formsolve
                              MatrixType                      *matrix,
                              VectorType                      &residual) const
     {
+      const double f_int = assemble_body(dof_handler,
+                                         mapping,
+                                         constraints,
+                                         v,
+                                         history,
+                                         dt,
+                                         newton,
+                                         matrix,
+                                         residual);
+      add_contact(constraints, dt, contact, newton, matrix, residual);
+      return f_int;
+    }
+
+    template <int dim>
+    void
+    Assembler<dim>::add_contact(const AffineConstraints<double> &constraints,
+                                const double                     dt,
+                                const ContactInput<dim>         &contact,
+                                const bool                       newton,
+                                MatrixType                      *matrix,
+                                VectorType                      &residual) const
+    {
+      if (contact.set != nullptr)
+        {
+          FullMatrix<double>                   Kc(dim, dim);
+          Vector<double>                       rc(dim);
+          std::vector<types::global_dof_index> node_dofs(dim);
+          const auto                          &set = *contact.set;
+          for (unsigned int k = 0; k < set.pairs.size(); ++k)
+            {
+              const auto &pair = set.pairs[k];
+              if (!pair.active)
+                continue;
+              const auto f = contact::penalty_friction_force(
+                pair,
+                (*contact.epsilon)[k],
+                contact.tools->friction_coefficient(pair.tool),
+                contact.regularisation_velocity,
+                dt,
+                newton);
+              for (unsigned int a = 0; a < dim; ++a)
+                {
+                  node_dofs[a] = set.nodes[pair.node].dofs[a];
+                  rc[a]        = -f.force[a];
+                  for (unsigned int b = 0; b < dim; ++b)
+                    Kc(a, b) = f.stiffness[a][b];
+                }
+              if (matrix)
+                constraints.distribute_local_to_global(Kc,
+                                                       rc,
+                                                       node_dofs,
+                                                       *matrix,
+                                                       residual);
+              else
+                constraints.distribute_local_to_global(rc, node_dofs, residual);
+            }
+        }
+
+      if (matrix)
+        matrix->compress(VectorOperation::add);
+      residual.compress(VectorOperation::add);
+    }
+
+    template <int dim>
+    double
+    Assembler<dim>::assemble_body(const DoFHandler<dim>           &dof_handler,
+                                  const Mapping<dim>              &mapping,
+                                  const AffineConstraints<double> &constraints,
+                                  const VectorType                &v,
+                                  const HistoryStorage<dim>       &history,
+                                  const double                     dt,
+                                  const bool                       newton,
+                                  MatrixType                      *matrix,
+                                  VectorType &residual) const
+    {
       const auto        &fe = dof_handler.get_fe();
       const unsigned int n  = fe.n_dofs_per_cell();
       FEValues<dim> fv(mapping, fe, full, update_gradients | update_JxW_values);
@@ -155,42 +230,6 @@ namespace formsolve
             else
               constraints.distribute_local_to_global(r, dofs, residual);
           }
-
-      if (contact.set != nullptr)
-        {
-          FullMatrix<double>                   Kc(dim, dim);
-          Vector<double>                       rc(dim);
-          std::vector<types::global_dof_index> node_dofs(dim);
-          const auto                          &set = *contact.set;
-          for (unsigned int k = 0; k < set.pairs.size(); ++k)
-            {
-              const auto &pair = set.pairs[k];
-              if (!pair.active)
-                continue;
-              const auto f = contact::penalty_friction_force(
-                pair,
-                (*contact.epsilon)[k],
-                contact.tools->friction_coefficient(pair.tool),
-                contact.regularisation_velocity,
-                dt,
-                newton);
-              for (unsigned int a = 0; a < dim; ++a)
-                {
-                  node_dofs[a] = set.nodes[pair.node].dofs[a];
-                  rc[a]        = -f.force[a];
-                  for (unsigned int b = 0; b < dim; ++b)
-                    Kc(a, b) = f.stiffness[a][b];
-                }
-              if (matrix)
-                constraints.distribute_local_to_global(Kc,
-                                                       rc,
-                                                       node_dofs,
-                                                       *matrix,
-                                                       residual);
-              else
-                constraints.distribute_local_to_global(rc, node_dofs, residual);
-            }
-        }
 
       if (matrix)
         matrix->compress(VectorOperation::add);

@@ -24,6 +24,8 @@ namespace formsolve
       bool         picard   = prm.picard_iterations > 0;
       unsigned int fallback = 0; // direct iterations left after a stall
       double       r        = system.assemble(v, !picard);
+      if (const double r_new = system.update_penalty(); r_new >= 0)
+        r = r_new;
       system.contact_set_changed(); // reset: compare from here on
       NonlinearSystem::VectorType dv(v), trial(v);
 
@@ -93,8 +95,10 @@ namespace formsolve
               fallback = 3;
               r_trial  = system.assemble(trial, false);
             }
-          picard               = !next_newton || fallback > 0;
-          v                    = trial;
+          picard = !next_newton || fallback > 0;
+          v      = trial;
+          if (const double r_new = system.update_penalty(); r_new >= 0)
+            r_trial = r_new;
           const bool   changed = system.contact_set_changed();
           const double scale   = system.force_scale();
           const double dv_rel =
@@ -105,7 +109,7 @@ namespace formsolve
               << "  |r|/|f|=" << std::scientific << std::setprecision(2)
               << report.residual << "  |dv|/|v|=" << dv_rel
               << "  alpha=" << alpha << (changed ? "  contact set changed" : "")
-              << std::defaultfloat << std::endl;
+              << std::defaultfloat << system.iteration_info() << std::endl;
           if (report.residual <= prm.residual_tolerance &&
               dv_rel <= prm.correction_tolerance && !changed)
             {

@@ -56,6 +56,8 @@ namespace formsolve
         friction.push_back(t.friction_coefficient);
         penalty.push_back(t.penalty_factor > 0 ? t.penalty_factor
                                                : c.penalty_factor);
+        allowed.push_back(t.allowed_penetration > 0 ? t.allowed_penetration
+                                                    : c.allowed_penetration);
         keys.push_back(key);
       };
       Tensor<1, dim> down;

@@ -22,26 +22,31 @@ namespace formsolve
     struct ContactStatistics
     {
       std::vector<Tensor<1, dim>>
-                   tool_force;           // force of the sheet on each tool (N)
-      double       max_penetration  = 0; // mm, >= 0
-      double       mean_penetration = 0; // mm, over penetrating nodes
-      unsigned int n_active         = 0;
-      unsigned int n_penetrating    = 0;
+                          tool_force; // force of the sheet on each tool (N)
+      std::vector<double> tool_max_penetration; // mm, per tool, >= 0
+      double              max_penetration  = 0; // mm, >= 0
+      double              mean_penetration = 0; // mm, over active pairs
+      unsigned int        n_active         = 0;
+      unsigned int        n_over_allowed = 0; // active pairs deeper than delta
+      unsigned int        n_locked       = 0; // pairs whose status was locked
     };
 
     template <int dim>
     class ContactPostprocessor
     {
     public:
-      ContactPostprocessor(const double search_distance,
-                           const double regularisation_velocity);
+      /// A pair whose status changes @p max_status_flips times in a step keeps
+      /// its status for the rest of the step (chatter guard).
+      ContactPostprocessor(const double       search_distance,
+                           const double       regularisation_velocity,
+                           const unsigned int max_status_flips = 1000000);
 
       /// Collect the locally owned nodes on faces with the free-surface id.
       void setup(const dealii::DoFHandler<dim> &dof_handler,
                  const dealii::Mapping<dim>    &reference_mapping,
                  ContactSet<dim>               &set) const;
 
-      /// Lumped nodal areas in the configuration given by @p mapping.
+      /// Lumped nodal area vectors in the configuration given by @p mapping.
       void update_areas(const dealii::DoFHandler<dim> &dof_handler,
                         const dealii::Mapping<dim>    &mapping,
                         ContactSet<dim>               &set) const;
@@ -55,7 +60,7 @@ namespace formsolve
                     ContactSet<dim>           &set) const;
 
       /// Forces from the contact law with factors @p epsilon (one per pair),
-      /// and penetration statistics of the current gaps (no prediction).
+      /// and penetration statistics of the predicted (end-of-step) gaps.
       ContactStatistics<dim> statistics(const tools::ToolSet<dim> &tools,
                                         const ContactSet<dim>     &set,
                                         const std::vector<double> &epsilon,
@@ -65,8 +70,9 @@ namespace formsolve
       double regularisation_velocity() const { return v0; }
 
     private:
-      double search_distance;
-      double v0;
+      double       search_distance;
+      double       v0;
+      unsigned int max_status_flips;
     };
   } // namespace contact
 } // namespace formsolve

@@ -77,7 +77,8 @@ namespace formsolve
       double      stroke;         // mm, total travel (moving tools)
       double      speed;          // mm/s (moving tools)
       double      friction_coefficient;
-      double      penalty_factor; // N/mm^3; 0: use Contact/Penalty factor
+      double      penalty_factor;      // N/mm^3; 0: use Contact/Penalty factor
+      double      allowed_penetration; // mm; 0: use Contact/Allowed penetration
 
       static void declare(ParameterHandler &prm, const Tool &defaults);
       void        parse(ParameterHandler &prm);
@@ -97,10 +98,18 @@ namespace formsolve
     /// Subsection "Contact".
     struct Contact
     {
-      std::string penalty_strategy; // fixed
-      double      penalty_factor;   // N/mm^3 (pressure per mm of penetration)
-      double      regularisation_velocity; // mm/s, friction arctan law
-      double      search_distance; // mm, nodes farther than this are skipped
+      std::string  penalty_strategy; // fixed | adaptive | adaptive-strict
+      double       penalty_factor;   // N/mm^3 (pressure per mm of penetration)
+      double       allowed_penetration; // delta (mm)
+      double       lower_bound;         // eps_k dt / K_kk, adaptive
+      double       upper_bound;
+      bool         freeze;            // keep eps once the contact set settles
+      std::string  adaptive_estimate; // force | projection
+      double       damping;           // max change factor of eps per estimate
+      unsigned int max_status_flips;  // then the pair's status is locked
+      unsigned int max_strict_passes; // adaptive-strict re-solves per step
+      double       regularisation_velocity; // mm/s, friction arctan law
+      double       search_distance; // mm, nodes farther than this are skipped
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);

@@ -70,7 +70,12 @@ namespace formsolve
       {
         return residual * w;
       }
-      bool contact_set_changed() override;
+      bool        contact_set_changed() override;
+      double      update_penalty() override;
+      std::string iteration_info() const override
+      {
+        return estimator->summary();
+      }
 
       const parameters::Run          &prm;
       const dealii::ParameterHandler &parameter_handler;
@@ -87,6 +92,10 @@ namespace formsolve
       std::unique_ptr<dealii::MappingQEulerian<dim, VectorType>> mapping;
 
       solver::MatrixType matrix;
+      /// Body system (no contact) of the last assembly, kept for adaptive
+      /// penalty estimates at accepted iterates.
+      solver::MatrixType body_matrix;
+      VectorType         body_residual;
       VectorType         residual, velocity, velocity_ghost, displacement,
         displacement_ghost, contact_fields;
 
@@ -101,8 +110,9 @@ namespace formsolve
       std::vector<bool>                               last_active;
       std::unique_ptr<solver::LinearSolver>           linear_solver;
 
-      double dt      = 0;
-      double f_scale = 0;
+      double dt          = 0;
+      double f_scale     = 0;
+      bool   last_newton = true; // tangent type of the last assembly
     };
   } // namespace simulation
 } // namespace formsolve

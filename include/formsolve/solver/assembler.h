@@ -61,6 +61,27 @@ namespace formsolve
                       MatrixType                              *matrix,
                       VectorType                              &residual) const;
 
+      /// The body part of assemble(): cells only, matrix and residual
+      /// zeroed first and compressed at the end.
+      double assemble_body(const dealii::DoFHandler<dim>           &dof_handler,
+                           const dealii::Mapping<dim>              &mapping,
+                           const dealii::AffineConstraints<double> &constraints,
+                           const VectorType                        &v,
+                           const HistoryStorage<dim>               &history,
+                           const double                             dt,
+                           const bool                               newton,
+                           MatrixType                              *matrix,
+                           VectorType &residual) const;
+
+      /// The contact part of assemble(): adds the nodal contact forces and
+      /// stiffnesses of the active pairs, then compresses.
+      void add_contact(const dealii::AffineConstraints<double> &constraints,
+                       const double                             dt,
+                       const ContactInput<dim>                 &contact,
+                       const bool                               newton,
+                       MatrixType                              *matrix,
+                       VectorType                              &residual) const;
+
       /// After convergence: integrate strain, thickness strain, store stresses.
       void update_history(const dealii::DoFHandler<dim> &dof_handler,
                           const dealii::Mapping<dim>    &mapping,

@@ -32,6 +32,13 @@ namespace formsolve
       virtual unsigned int solve(VectorType &dv) = 0;
       /// Whether the contact set changed since the previous call.
       virtual bool contact_set_changed() = 0;
+      /// Called at an accepted iterate (after its assembly): a system whose
+      /// equations depend on the iterate (adaptive penalty factors) updates
+      /// them here and returns the new |r|; -1 if nothing changed. Line-search
+      /// trials in between solve one fixed set of equations.
+      virtual double update_penalty() { return -1; }
+      /// Extra text for the iteration log (e.g. the penalty factor range).
+      virtual std::string iteration_info() const { return ""; }
     };
 
     struct NewtonReport

@@ -31,6 +31,11 @@ namespace formsolve
       }
       /// Fixed penalty of tool i (N/mm^3).
       double penalty_factor(const unsigned int i) const { return penalty[i]; }
+      /// Allowed penetration delta into tool i (mm).
+      double allowed_penetration(const unsigned int i) const
+      {
+        return allowed[i];
+      }
       /// Column/field name of tool i: punch, die, blank_holder.
       const std::string &key(const unsigned int i) const { return keys[i]; }
       unsigned int       punch_index() const { return 0; }
@@ -42,7 +47,7 @@ namespace formsolve
 
     private:
       std::vector<std::unique_ptr<RigidTool<dim>>> tools;
-      std::vector<double>                          friction, penalty;
+      std::vector<double>                          friction, penalty, allowed;
       std::vector<std::string>                     keys;
       double                                       stroke, speed;
     };

@@ -1,0 +1,89 @@
+// The 1-D spring of the method page (../shared/method/adaptive-penalty.md):
+// stiffness k, force q, rigid face at u_bar. The adaptive estimator must
+// return the closed-form minimal factor eps = (q - k (u_bar + delta)) / delta
+// to round-off, and with it the penetration is exactly delta.
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <formsolve/contact/penalty_estimator.h>
+
+#include "check.h"
+
+using namespace dealii;
+using namespace formsolve;
+
+int main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const double k = 100, q = 1000, u_bar = 2, delta = 1e-3, dt = 0.25;
+
+  // Velocity form with u = v dt: r_b(v) = k v dt - q, K_b = k dt. The spring
+  // is DoF 0; DoFs 1, 2 are uncoupled unit springs (the node's other axes).
+  IndexSet all(3);
+  all.add_range(0, 3);
+  DynamicSparsityPattern dsp(3, 3);
+  for (unsigned int i = 0; i < 3; ++i)
+    dsp.add(i, i);
+  TrilinosWrappers::SparseMatrix K;
+  K.reinit(all, all, dsp, MPI_COMM_WORLD);
+  K.set(0, 0, k * dt);
+  K.set(1, 1, 1.);
+  K.set(2, 2, 1.);
+  K.compress(VectorOperation::insert);
+
+  AffineConstraints<double> constraints;
+  constraints.close();
+
+  parameters::Tools tool_prm;
+  tool_prm.punch = {"Punch", true, "flat", 0, 0, 0, 0, 0, 0, 1, 1, 0, 0, delta};
+  tool_prm.die          = tool_prm.punch;
+  tool_prm.die.enabled  = false;
+  tool_prm.blank_holder = tool_prm.die;
+  parameters::Contact contact_prm;
+  contact_prm.penalty_factor      = 1;
+  contact_prm.allowed_penetration = delta;
+  contact_prm.lower_bound         = 1e-3;
+  contact_prm.upper_bound         = 1e6;
+  contact_prm.freeze              = false;
+  contact_prm.damping             = 1e300; // no damping: test the estimate
+  contact_prm.adaptive_estimate   = "projection";
+  const tools::ToolSet<3> tools(tool_prm, contact_prm, 1.);
+
+  // projection (the published method) at iterates inside and short of the
+  // final position: the estimate must not depend on where the iteration
+  // stands; force (its dv -> 0 limit) at the converged iterate u_bar + delta.
+  for (const auto &[variant, u] : {std::pair{"projection", u_bar + 0.5},
+                                   std::pair{"projection", u_bar + 1e-6},
+                                   std::pair{"force", u_bar + delta}})
+    {
+      contact_prm.adaptive_estimate = variant;
+      contact::ContactSet<3> set;
+      set.nodes.resize(1);
+      set.nodes[0].dofs = {0, 1, 2};
+      contact::ContactPair<3> pair;
+      pair.node = 0, pair.tool = 0, pair.area = 1;
+      pair.normal[0]     = -1; // the face pushes towards -x
+      pair.gap           = u_bar;
+      pair.predicted_gap = u_bar - u;
+      pair.active        = true;
+      set.pairs.push_back(pair);
+
+      TrilinosWrappers::MPI::Vector r(all, MPI_COMM_WORLD);
+      r[0] = k * u - q;
+      r.compress(VectorOperation::insert);
+
+      contact::AdaptivePenalty<3> estimator(contact_prm, false);
+      std::vector<double>         eps;
+      estimator.estimate(set, tools, contact::SystemView{&r, &K, &constraints, dt},
+                         eps);
+      const double eps_min = (q - k * (u_bar + delta)) / delta;
+      test::close(std::string(variant) + ": eps at u = " + std::to_string(u) +
+                    " / closed-form minimum",
+                  eps[0] / eps_min, 1., 1e-12);
+
+      // k u + eps (u - u_bar) = q  =>  penetration u - u_bar.
+      const double u_solved = (q + eps[0] * u_bar) / (k + eps[0]);
+      test::close("penetration / delta", (u_solved - u_bar) / delta, 1., 1e-9);
+    }
+  return test::result();
+}
