@@ -196,23 +196,33 @@ namespace formsolve
                                 comm) != 0;
         }
       if (estimate)
-        {
-          TimerOutput::Scope t(timer, "penalty estimate");
-          estimator->estimate(
-            contact_set,
-            tools,
-            contact::SystemView{&residual, &matrix, &constraints, dt},
-            epsilon);
-        }
+        estimate_penalty(residual, matrix);
       last_newton = newton;
+      add_contact_terms();
+      return residual.l2_norm();
+    }
+
+    template <int dim>
+    void Simulation<dim>::estimate_penalty(const VectorType         &r_b,
+                                           const solver::MatrixType &K_b)
+    {
+      TimerOutput::Scope t(timer, "penalty estimate");
+      estimator->estimate(contact_set,
+                          tools,
+                          contact::SystemView{&r_b, &K_b, &constraints, dt},
+                          epsilon);
+    }
+
+    template <int dim>
+    void Simulation<dim>::add_contact_terms()
+    {
       TimerOutput::Scope        t(timer, "assembly");
       solver::ContactInput<dim> contact{&contact_set,
                                         &epsilon,
                                         &tools,
                                         prm.contact.regularisation_velocity};
       assembler
-        .add_contact(constraints, dt, contact, newton, &matrix, residual);
-      return residual.l2_norm();
+        .add_contact(constraints, dt, contact, last_newton, &matrix, residual);
     }
 
     template <int dim>
@@ -220,26 +230,13 @@ namespace formsolve
     {
       if (!estimator->needs_system())
         return -1;
-      {
-        TimerOutput::Scope t(timer, "penalty estimate");
-        estimator->estimate(
-          contact_set,
-          tools,
-          contact::SystemView{&body_residual, &body_matrix, &constraints, dt},
-          epsilon);
-      }
-      TimerOutput::Scope t(timer, "assembly");
+      estimate_penalty(body_residual, body_matrix);
       matrix.copy_from(body_matrix);
       residual = body_residual;
       // The copy leaves the vector in 'insert' mode; settle it on every rank
       // now, before ranks with and without contact pairs start adding.
       residual.compress(VectorOperation::insert);
-      solver::ContactInput<dim> contact{&contact_set,
-                                        &epsilon,
-                                        &tools,
-                                        prm.contact.regularisation_velocity};
-      assembler
-        .add_contact(constraints, dt, contact, last_newton, &matrix, residual);
+      add_contact_terms();
       return residual.l2_norm();
     }
 

@@ -36,7 +36,7 @@ int main(int argc, char **argv)
 
   parameters::Tools tool_prm;
   tool_prm.punch = {"Punch", true, "flat", 0, 0, 0, 0, 0, 0, 1, 1, 0, 0, delta};
-  tool_prm.die          = tool_prm.punch;
+  tool_prm.die   = tool_prm.punch;
   tool_prm.die.enabled  = false;
   tool_prm.blank_holder = tool_prm.die;
   parameters::Contact contact_prm;
@@ -74,12 +74,16 @@ int main(int argc, char **argv)
 
       contact::AdaptivePenalty<3> estimator(contact_prm, false);
       std::vector<double>         eps;
-      estimator.estimate(set, tools, contact::SystemView{&r, &K, &constraints, dt},
+      estimator.estimate(set,
+                         tools,
+                         contact::SystemView{&r, &K, &constraints, dt},
                          eps);
       const double eps_min = (q - k * (u_bar + delta)) / delta;
       test::close(std::string(variant) + ": eps at u = " + std::to_string(u) +
                     " / closed-form minimum",
-                  eps[0] / eps_min, 1., 1e-12);
+                  eps[0] / eps_min,
+                  1.,
+                  1e-12);
 
       // k u + eps (u - u_bar) = q  =>  penetration u - u_bar.
       const double u_solved = (q + eps[0] * u_bar) / (k + eps[0]);

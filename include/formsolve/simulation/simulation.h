@@ -61,6 +61,12 @@ namespace formsolve
       void prepare_output_directory();
       void write_output(const unsigned int step);
       void fill_contact_fields();
+      /// Penalty factors from the body system (r_b, K_b) of the current pairs.
+      void estimate_penalty(const VectorType         &r_b,
+                            const solver::MatrixType &K_b);
+      /// Contact forces and stiffness with the current factors, added to the
+      /// matrix and residual (tangent type of the last assembly).
+      void add_contact_terms();
 
       // solver::NonlinearSystem
       double       assemble(const VectorType &v, const bool newton) override;
