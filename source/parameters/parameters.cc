@@ -470,7 +470,7 @@ namespace formsolve
         "penalty (-).");
       prm.declare_entry(
         "Freeze factors",
-        "false",
+        "true",
         Bool(),
         "Adaptive: stop updating the factors in a step once the "
         "contact set is unchanged between two iterations.");
