@@ -29,7 +29,7 @@ namespace formsolve
       out.stiffness = epsilon * dt * outer_product(n, n);
       if (!pair.active)
         return out;
-      out.normal_force = -epsilon * pair.predicted_gap;
+      out.normal_force = epsilon * (pair.shift - pair.predicted_gap);
       out.force        = out.normal_force * n;
       if (mu == 0)
         return out;

@@ -32,6 +32,8 @@ namespace formsolve
     {
       set.nodes.clear();
       set.pairs.clear();
+      set.shifts.clear();
+      set.begin_step();
       const auto &fe    = dof_handler.get_fe();
       const auto  owned = dof_handler.locally_owned_dofs();
       std::map<types::global_dof_index, Point<dim>> support;
@@ -139,8 +141,10 @@ namespace formsolve
               pair.relative_velocity = vel - tools[t].velocity();
               pair.predicted_gap =
                 pair.gap + (pair.normal * pair.relative_velocity) * dt;
-              pair.area   = std::max(0., -(pair.normal * node.area_vector));
-              pair.active = pair.predicted_gap < 0 && pair.area > 0;
+              pair.area = std::max(0., -(pair.normal * node.area_vector));
+              pair.shift =
+                set.shifts.empty() ? 0. : set.shifts[k * tools.size() + t];
+              pair.active = pair.predicted_gap < pair.shift && pair.area > 0;
               set.pairs.push_back(pair);
             }
         }

@@ -139,7 +139,7 @@ namespace formsolve
     }
 
     template <int dim>
-    bool AdaptivePenalty<dim>::finish_step(const ContactSet<dim>     &set,
+    bool AdaptivePenalty<dim>::finish_step(ContactSet<dim>           &set,
                                            const tools::ToolSet<dim> &tools,
                                            const MPI_Comm             comm)
     {
@@ -173,9 +173,44 @@ namespace formsolve
     }
 
     template <int dim>
+    AugmentedLagrangian<dim>::AugmentedLagrangian(
+      std::unique_ptr<PenaltyEstimator<dim>> inner)
+        : inner(std::move(inner))
+    {}
+
+    template <int dim>
+    bool AugmentedLagrangian<dim>::finish_step(ContactSet<dim>           &set,
+                                               const tools::ToolSet<dim> &tools,
+                                               const MPI_Comm             comm)
+    {
+      inner->finish_step(set, tools, comm);
+      // Pairs out of search distance lose their multiplier.
+      std::vector<double> shifts(set.nodes.size() * tools.size(), 0.);
+      int                 again = 0;
+      for (const auto &pair : set.pairs)
+        {
+          // Uzawa: lambda <- <lambda - eps g>, as a shift with eps fixed.
+          shifts[pair.node * tools.size() + pair.tool] =
+            std::max(0., pair.shift - pair.predicted_gap);
+          if (pair.active &&
+              -pair.predicted_gap > tools.allowed_penetration(pair.tool))
+            again = 1;
+        }
+      set.shifts.swap(shifts);
+      return Utilities::MPI::max(again, comm) != 0;
+    }
+
+    template <int dim>
     std::unique_ptr<PenaltyEstimator<dim>>
     create_penalty_estimator(const parameters::Contact &p)
     {
+      if (p.penalty_strategy == "augmented-lagrangian")
+        {
+          parameters::Contact inner = p;
+          inner.penalty_strategy    = p.al_penalty;
+          return std::make_unique<AugmentedLagrangian<dim>>(
+            create_penalty_estimator<dim>(inner));
+        }
       if (p.penalty_strategy == "adaptive")
         return std::make_unique<AdaptivePenalty<dim>>(p, false);
       if (p.penalty_strategy == "adaptive-strict")
@@ -190,6 +225,8 @@ namespace formsolve
     template class FixedPenalty<3>;
     template class AdaptivePenalty<2>;
     template class AdaptivePenalty<3>;
+    template class AugmentedLagrangian<2>;
+    template class AugmentedLagrangian<3>;
     template std::unique_ptr<PenaltyEstimator<2>>
     create_penalty_estimator<2>(const parameters::Contact &);
     template std::unique_ptr<PenaltyEstimator<3>>

@@ -423,13 +423,22 @@ namespace formsolve
       prm.declare_entry(
         "Penalty strategy",
         "fixed",
-        Selection("fixed|adaptive|adaptive-strict"),
+        Selection("fixed|adaptive|adaptive-strict|augmented-lagrangian"),
         "How penalty factors are chosen. fixed: 'Penalty factor' (or the "
         "tool's own) times the nodal contact area. adaptive: per contact "
         "pair and Newton iteration from the current system, so that the "
         "penetration is about 'Allowed penetration' (doc/theory.md). "
         "adaptive-strict: adaptive, and a converged step with a penetration "
-        "above the allowed one is solved again with those factors scaled up.");
+        "above the allowed one is solved again with those factors scaled up. "
+        "augmented-lagrangian: Uzawa updates of a multiplier per pair on "
+        "the factors of 'Augmented Lagrangian penalty', the step re-solved "
+        "until no node is deeper than 'Allowed penetration'.");
+      prm.declare_entry(
+        "Augmented Lagrangian penalty",
+        "fixed",
+        Selection("fixed|adaptive"),
+        "augmented-lagrangian: the factors the Uzawa updates run on, "
+        "fixed ('Penalty factor') or adaptive (as strategy adaptive).");
       prm.declare_entry(
         "Penalty factor",
         "1e5",
@@ -479,10 +488,13 @@ namespace formsolve
                         Integer(1),
                         "Contact status changes of one node in one step after "
                         "which its status is locked for the rest of the step.");
-      prm.declare_entry("Max strict passes",
-                        "5",
-                        Integer(0),
-                        "adaptive-strict: re-solves of one step at most.");
+      prm.declare_entry(
+        "Max strict passes",
+        "5",
+        Integer(0),
+        "adaptive-strict and augmented-lagrangian: re-solves of "
+        "one step at most; a step still deeper than allowed "
+        "after them is kept and reported in history.csv.");
       prm.declare_entry("Friction regularisation velocity",
                         "1e-3",
                         Double(),
@@ -501,6 +513,7 @@ namespace formsolve
     {
       prm.enter_subsection("Contact");
       penalty_strategy    = prm.get("Penalty strategy");
+      al_penalty          = prm.get("Augmented Lagrangian penalty");
       penalty_factor      = prm.get_double("Penalty factor");
       allowed_penetration = prm.get_double("Allowed penetration");
       lower_bound         = prm.get_double("Lower bound");
@@ -518,6 +531,11 @@ namespace formsolve
 
     void Contact::validate() const
     {
+      require(penalty_strategy != "augmented-lagrangian" ||
+                max_strict_passes > 0,
+              "Contact/Max strict passes",
+              "must be at least 1 for augmented-lagrangian (its Uzawa "
+              "updates are the passes)");
       require(penalty_factor > 0,
               "Contact/Penalty factor",
               "must be positive (N/mm^3), got " + str(penalty_factor));
@@ -659,17 +677,27 @@ namespace formsolve
                         "2000",
                         Integer(1),
                         "Iteration limit of the iterative solver.");
+      prm.declare_entry(
+        "Condition estimate iterations",
+        "0",
+        Integer(0),
+        "Diagnostics: after every linear solve, this many unpreconditioned "
+        "CG iterations on the system matrix give a Lanczos estimate of its "
+        "condition number (history.csv column condition_estimate; a lower "
+        "bound, meaningful for symmetric systems, i.e. without friction). "
+        "0: off.");
       prm.leave_subsection();
     }
 
     void LinearSolver::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Linear solver");
-      type             = prm.get("Type");
-      direct_solver    = prm.get("Direct solver");
-      iterative_solver = prm.get("Iterative solver");
-      tolerance        = prm.get_double("Tolerance");
-      max_iterations   = prm.get_integer("Max iterations");
+      type                 = prm.get("Type");
+      direct_solver        = prm.get("Direct solver");
+      iterative_solver     = prm.get("Iterative solver");
+      tolerance            = prm.get_double("Tolerance");
+      max_iterations       = prm.get_integer("Max iterations");
+      condition_iterations = prm.get_integer("Condition estimate iterations");
       prm.leave_subsection();
     }
 

@@ -246,7 +246,10 @@ namespace formsolve
       TimerOutput::Scope t(timer, "linear solve");
       VectorType         rhs(residual);
       rhs *= -1.;
-      const unsigned int its = linear_solver->solve(matrix, dv, rhs);
+      const unsigned int its     = linear_solver->solve(matrix, dv, rhs);
+      step_max_linear_iterations = std::max(step_max_linear_iterations, its);
+      step_condition =
+        std::max(step_condition, linear_solver->condition_estimate());
       constraints.distribute(dv);
       return its;
     }
@@ -279,8 +282,8 @@ namespace formsolve
           gap[p.node]   = std::min(gap[p.node], p.predicted_gap);
           if (p.active)
             {
-              pressure[p.node] +=
-                -epsilon[k] * p.predicted_gap / std::max(p.area, 1e-300);
+              pressure[p.node] += epsilon[k] * (p.shift - p.predicted_gap) /
+                                  std::max(p.area, 1e-300);
               penalty[p.node] += epsilon[k];
             }
         }
@@ -345,7 +348,9 @@ namespace formsolve
                       "locked_pairs",
                       "strict_passes",
                       "min_penalty",
-                      "max_penalty"});
+                      "max_penalty",
+                      "max_linear_iterations",
+                      "condition_estimate"});
       HistoryFile            history_file(prm.output.directory + "/history.csv",
                                columns,
                                Utilities::MPI::this_mpi_process(comm) == 0);
@@ -385,7 +390,9 @@ namespace formsolve
           }
           constraints.distribute(
             velocity); // previous step's velocity: predictor
-          const double         newton_start = seconds();
+          const double newton_start  = seconds();
+          step_max_linear_iterations = 0;
+          step_condition             = 0;
           solver::NewtonReport report;
           unsigned int         passes = 0;
           for (;; ++passes)
@@ -400,8 +407,10 @@ namespace formsolve
               report.linear_iterations += r.linear_iterations;
               report.picard_iterations += r.picard_iterations;
               // adaptive-strict: solve again while a node is deeper than delta.
-              if (!r.converged || passes >= prm.contact.max_strict_passes ||
-                  !estimator->finish_step(contact_set, tools, comm))
+              // augmented-lagrangian: update the multipliers, likewise.
+              if (!r.converged ||
+                  !estimator->finish_step(contact_set, tools, comm) ||
+                  passes >= prm.contact.max_strict_passes)
                 break;
             }
           summary.newton_wall_time += seconds() - newton_start;
@@ -475,7 +484,9 @@ namespace formsolve
                       double(stats.n_locked),
                       double(passes),
                       stats.n_active > 0 ? eps_min : 0.,
-                      eps_max});
+                      eps_max,
+                      double(step_max_linear_iterations),
+                      step_condition});
           history_file.write_row(row);
 
           const double left = wall / travel * (stroke - travel);

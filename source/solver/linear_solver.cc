@@ -1,3 +1,4 @@
+#include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
@@ -27,10 +28,35 @@ namespace formsolve
 
     LinearSolver::~LinearSolver() = default;
 
+    void
+    LinearSolver::estimate_condition(const TrilinosWrappers::SparseMatrix &A,
+                                     const TrilinosWrappers::MPI::Vector  &b)
+    {
+      last_condition = 0;
+      if (prm.condition_iterations == 0)
+        return;
+      // The Lanczos tridiagonal of CG gives the extreme eigenvalues; stop
+      // after a fixed number of steps (convergence is not the point here).
+      SolverControl control(prm.condition_iterations, 0., false, false);
+      SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+      cg.connect_condition_number_slot(
+        [this](const double c) { last_condition = c; },
+        false);
+      TrilinosWrappers::MPI::Vector y(b);
+      y = 0;
+      try
+        {
+          cg.solve(A, y, b, PreconditionIdentity());
+        }
+      catch (const SolverControl::NoConvergence &)
+        {}
+    }
+
     unsigned int LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
                                      TrilinosWrappers::MPI::Vector        &x,
                                      const TrilinosWrappers::MPI::Vector  &b)
     {
+      estimate_condition(A, b);
       if (prm.type == "direct")
         {
           auto &matrix = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());

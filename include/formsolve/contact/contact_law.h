@@ -15,8 +15,9 @@ namespace formsolve
       double         normal_force; // >= 0 (N)
     };
 
-    /// f = eps <-g_pred> n - mu f_n (2/pi) atan(|v_t|/v0) v_t/|v_t|
-    /// (doc/theory.md, eq. 6). @p newton false gives the secant friction term.
+    /// f = eps <s - g_pred> n (s: augmented Lagrangian shift, else 0) - mu f_n
+    /// (2/pi) atan(|v_t|/v0) v_t/|v_t| (doc/theory.md, eq. 6). @p newton false
+    /// gives the secant friction term.
     template <int dim>
     NodalContactForce<dim> penalty_friction_force(const ContactPair<dim> &pair,
                                                   const double epsilon,

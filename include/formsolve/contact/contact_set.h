@@ -40,6 +40,9 @@ namespace formsolve
       double         area;   // projected nodal area facing the tool (mm^2)
       bool           active; // predicted_gap < 0
       bool           locked = false; // status frozen by the chatter guard
+      /// Augmented Lagrangian: multiplier as a gap shift s = lambda/eps (mm);
+      /// the normal force is eps <s - predicted_gap>. Zero otherwise.
+      double shift = 0;
     };
 
     template <int dim>
@@ -53,6 +56,10 @@ namespace formsolve
       std::vector<unsigned int> flips;  // status changes per pair
       std::vector<int>          locked; // -1 free, else the locked status
       std::vector<bool>         previous_active;
+
+      /// Augmented Lagrangian gap shifts per (node, tool), index
+      /// node * n_tools + tool; persistent across steps, empty if unused.
+      std::vector<double> shifts;
 
       void begin_step()
       {

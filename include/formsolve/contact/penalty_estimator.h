@@ -47,8 +47,9 @@ namespace formsolve
                             std::vector<double>       &epsilon) = 0;
 
       /// Called once a step has converged with factors @p epsilon. Returns
-      /// true if the step must be solved again (same on all ranks).
-      virtual bool finish_step(const ContactSet<dim> & /*set*/,
+      /// true if the step must be solved again (same on all ranks). May
+      /// update the multipliers (ContactSet::shifts) of @p set.
+      virtual bool finish_step(ContactSet<dim> & /*set*/,
                                const tools::ToolSet<dim> & /*tools*/,
                                const MPI_Comm /*comm*/)
       {
@@ -92,7 +93,7 @@ namespace formsolve
                            const tools::ToolSet<dim> &tools,
                            const SystemView          &system,
                            std::vector<double>       &epsilon) override;
-      bool        finish_step(const ContactSet<dim>     &set,
+      bool        finish_step(ContactSet<dim>           &set,
                               const tools::ToolSet<dim> &tools,
                               const MPI_Comm             comm) override;
       std::string summary() const override;
@@ -117,6 +118,39 @@ namespace formsolve
       std::vector<double> previous;
       bool                projection; // the published estimate with K_b dv
       double              damping;    // max change factor per estimate
+    };
+
+    /// Augmented Lagrangian (Uzawa) on the factors of an inner strategy
+    /// (fixed or adaptive): the force of pair k is eps_k <s_k - g_k> with the
+    /// gap shift s_k = lambda_k / eps_k. After a converged step every pair
+    /// gets s_k <- max(0, s_k - g_k), i.e. lambda_k <- <lambda_k - eps_k g_k>,
+    /// and the step is solved again while a node is deeper than delta.
+    template <int dim>
+    class AugmentedLagrangian : public PenaltyEstimator<dim>
+    {
+    public:
+      explicit AugmentedLagrangian(
+        std::unique_ptr<PenaltyEstimator<dim>> inner);
+
+      bool needs_system() const override { return inner->needs_system(); }
+      void estimate(const ContactSet<dim>     &set,
+                    const tools::ToolSet<dim> &tools,
+                    const SystemView          &system,
+                    std::vector<double>       &epsilon) override
+      {
+        inner->estimate(set, tools, system, epsilon);
+      }
+      bool        finish_step(ContactSet<dim>           &set,
+                              const tools::ToolSet<dim> &tools,
+                              const MPI_Comm             comm) override;
+      std::string summary() const override { return inner->summary(); }
+      std::string name() const override
+      {
+        return "augmented-lagrangian (" + inner->name() + ")";
+      }
+
+    private:
+      std::unique_ptr<PenaltyEstimator<dim>> inner;
     };
 
     template <int dim>

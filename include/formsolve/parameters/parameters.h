@@ -98,8 +98,10 @@ namespace formsolve
     /// Subsection "Contact".
     struct Contact
     {
-      std::string  penalty_strategy; // fixed | adaptive | adaptive-strict
-      double       penalty_factor;   // N/mm^3 (pressure per mm of penetration)
+      std::string penalty_strategy; // fixed | adaptive | adaptive-strict |
+                                    // augmented-lagrangian
+      std::string  al_penalty;      // fixed | adaptive: factors under Uzawa
+      double       penalty_factor;  // N/mm^3 (pressure per mm of penetration)
       double       allowed_penetration; // delta (mm)
       double       lower_bound;         // eps_k dt / K_kk, adaptive
       double       upper_bound;
@@ -107,7 +109,7 @@ namespace formsolve
       std::string  adaptive_estimate; // force | projection
       double       damping;           // max change factor of eps per estimate
       unsigned int max_status_flips;  // then the pair's status is locked
-      unsigned int max_strict_passes; // adaptive-strict re-solves per step
+      unsigned int max_strict_passes; // strict / Uzawa re-solves per step
       double       regularisation_velocity; // mm/s, friction arctan law
       double       search_distance; // mm, nodes farther than this are skipped
 
@@ -151,6 +153,7 @@ namespace formsolve
       std::string  iterative_solver; // GMRES | CG
       double       tolerance;
       unsigned int max_iterations;
+      unsigned int condition_iterations; // Lanczos estimate, 0: off
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);

@@ -119,6 +119,9 @@ namespace formsolve
       double dt          = 0;
       double f_scale     = 0;
       bool   last_newton = true; // tangent type of the last assembly
+      // Per step: largest linear iteration count and condition estimate.
+      unsigned int step_max_linear_iterations = 0;
+      double       step_condition             = 0;
     };
   } // namespace simulation
 } // namespace formsolve

@@ -33,6 +33,10 @@ namespace formsolve
                          dealii::TrilinosWrappers::MPI::Vector        &x,
                          const dealii::TrilinosWrappers::MPI::Vector  &b);
 
+      /// Lanczos estimate of cond(A) from the last solve ('Condition estimate
+      /// iterations' CG steps without preconditioner), 0 if off.
+      double condition_estimate() const { return last_condition; }
+
     private:
       parameters::LinearSolver              prm;
       std::vector<std::vector<bool>>        constant_modes;
@@ -40,6 +44,10 @@ namespace formsolve
       std::unique_ptr<Amesos_BaseSolver>    direct;
       const void                           *factorised_matrix = nullptr;
       unsigned long long                    factorised_nnz    = 0;
+      double                                last_condition    = 0;
+
+      void estimate_condition(const dealii::TrilinosWrappers::SparseMatrix &A,
+                              const dealii::TrilinosWrappers::MPI::Vector  &b);
     };
   } // namespace solver
 } // namespace formsolve
