@@ -33,10 +33,12 @@ namespace formsolve
         {
           report.iterations = it;
           report.picard_iterations += picard;
-          dv = 0;
+          dv                      = 0;
+          unsigned int linear_its = 0;
           try
             {
-              report.linear_iterations += system.solve(dv);
+              linear_its = system.solve(dv);
+              report.linear_iterations += linear_its;
             }
           catch (const std::exception &e)
             {
@@ -108,8 +110,9 @@ namespace formsolve
           log << "      it " << std::setw(2) << it << (picard ? " P" : " N")
               << "  |r|/|f|=" << std::scientific << std::setprecision(2)
               << report.residual << "  |dv|/|v|=" << dv_rel
-              << "  alpha=" << alpha << (changed ? "  contact set changed" : "")
-              << std::defaultfloat << system.iteration_info() << std::endl;
+              << "  alpha=" << alpha << "  linear=" << linear_its
+              << (changed ? "  contact set changed" : "") << std::defaultfloat
+              << system.iteration_info() << std::endl;
           if (report.residual <= prm.residual_tolerance &&
               dv_rel <= prm.correction_tolerance && !changed)
             {
