@@ -1,6 +1,9 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_point_data.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_dgq.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
@@ -46,6 +49,7 @@ namespace formsolve
                        run.contact.regularisation_velocity,
                        run.contact.max_status_flips)
         , estimator(contact::create_penalty_estimator<dim>(run.contact))
+        , refinement(run.refinement, tools)
     {}
 
     template <int dim>
@@ -53,6 +57,15 @@ namespace formsolve
     {
       TimerOutput::Scope t(timer, "setup");
       geometry::create_blank_mesh(prm.geometry, prm.mesh, tria);
+      setup_dofs();
+    }
+
+    template <int dim>
+    void Simulation<dim>::setup_dofs()
+    {
+      // The direct solver refers to the matrix: release it first.
+      linear_solver.reset();
+      mapping.reset();
       dof_handler.distribute_dofs(fe);
       owned = dof_handler.locally_owned_dofs();
       DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
@@ -99,14 +112,88 @@ namespace formsolve
                                                             dof_handler,
                                                             displacement_ghost);
 
+      history.clear();
       assembler.initialize_history(dof_handler, history);
       contact_post.setup(dof_handler, reference_mapping, contact_set);
+      epsilon.clear();
+      last_active.clear();
+      estimator->reset();
 
       std::vector<std::vector<bool>> modes;
       DoFTools::extract_constant_modes(dof_handler,
                                        ComponentMask(dim, true),
                                        modes);
       linear_solver = std::make_unique<solver::LinearSolver>(prm.linear, modes);
+    }
+
+    template <int dim>
+    bool Simulation<dim>::adapt_mesh(const unsigned int step)
+    {
+      TimerOutput::Scope t(timer, "mesh refinement");
+      velocity_ghost = velocity;
+      const auto flags =
+        refinement.mark(dof_handler, *mapping, velocity_ghost, tools);
+      if (flags.refine + flags.coarsen == 0)
+        return false;
+      const double volume_before = assembler.volume(dof_handler, *mapping);
+      const double strain_before =
+        assembler.strain_integral(dof_handler, *mapping, history);
+      const double cells_before = tria.n_global_active_cells();
+
+      // Smoothing drops coarsening flags of incomplete families (and adds
+      // refinement for the 2:1 balance): count what is left.
+      tria.prepare_coarsening_and_refinement();
+      unsigned int left = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            (cell->refine_flag_set() || cell->coarsen_flag_set()))
+          ++left;
+      if (Utilities::MPI::sum(left, comm) == 0)
+        return false;
+      parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+        dof_handler);
+      const std::vector<const VectorType *> in = {&velocity_ghost,
+                                                  &displacement_ghost};
+      transfer.prepare_for_coarsening_and_refinement(in);
+      // History: L2 projection onto discontinuous Q_p per cell, which keeps
+      // cell integrals when cells are split or merged.
+      const FE_DGQ<dim> projection(prm.mesh.degree);
+      parallel::distributed::
+        ContinuousQuadratureDataTransfer<dim, QuadraturePointHistory>
+          history_transfer(projection,
+                           assembler.quadrature(),
+                           assembler.quadrature());
+      store_parent_history(tria, assembler.quadrature(), history);
+      history_transfer.prepare_for_coarsening_and_refinement(tria, history);
+      mapping.reset();
+      tria.execute_coarsening_and_refinement();
+
+      setup_dofs();
+      std::vector<VectorType *> out = {&velocity, &displacement};
+      transfer.interpolate(out);
+      constraints.distribute(velocity);
+      constraints.distribute(displacement);
+      velocity_ghost     = velocity;
+      displacement_ghost = displacement;
+      history_transfer.interpolate();
+      contact_post.update_areas(dof_handler, *mapping, contact_set);
+
+      const double volume_after = assembler.volume(dof_handler, *mapping);
+      const double strain_after =
+        assembler.strain_integral(dof_handler, *mapping, history);
+      if (refinement_log)
+        refinement_log->write_row({double(step),
+                                   tools.punch_travel(),
+                                   cells_before,
+                                   double(tria.n_global_active_cells()),
+                                   double(dof_handler.n_dofs()),
+                                   double(flags.refine),
+                                   double(flags.coarsen),
+                                   volume_before,
+                                   volume_after,
+                                   strain_before,
+                                   strain_after});
+      return true;
     }
 
     template <int dim>
@@ -350,7 +437,8 @@ namespace formsolve
                       "min_penalty",
                       "max_penalty",
                       "max_linear_iterations",
-                      "condition_estimate"});
+                      "condition_estimate",
+                      "dofs"});
       HistoryFile            history_file(prm.output.directory + "/history.csv",
                                columns,
                                Utilities::MPI::this_mpi_process(comm) == 0);
@@ -367,6 +455,28 @@ namespace formsolve
                                     &history};
         writer.write(step, time, dof_handler, *mapping, f);
       };
+      if (prm.refinement.enabled())
+        {
+          refinement_log = std::make_unique<HistoryFile>(
+            prm.output.directory + "/refinement.csv",
+            std::vector<std::string>{"step",
+                                     "punch_travel",
+                                     "cells_before",
+                                     "cells_after",
+                                     "dofs",
+                                     "flagged_refine",
+                                     "flagged_coarsen",
+                                     "volume_before",
+                                     "volume_after",
+                                     "strain_integral_before",
+                                     "strain_integral_after"},
+            Utilities::MPI::this_mpi_process(comm) == 0);
+          // Refine towards the radii before the first step, one level a pass.
+          for (unsigned int pass = 0; pass < 8 && adapt_mesh(0); ++pass)
+            {}
+          pcout << "adapted mesh: " << tria.n_global_active_cells()
+                << " cells, " << dof_handler.n_dofs() << " DoFs" << std::endl;
+        }
       if (prm.output.interval > 0)
         write(0, 0.);
 
@@ -382,6 +492,12 @@ namespace formsolve
       while (tools.punch_travel() < stroke * (1 - 1e-12))
         {
           ++step;
+          if (prm.refinement.enabled() && step > 1 &&
+              (step - 1) % prm.refinement.interval == 0)
+            adapt_mesh(step);
+          summary.n_dofs =
+            std::max(summary.n_dofs, double(dof_handler.n_dofs()));
+          summary.dof_steps += dof_handler.n_dofs();
           dt = std::min(prm.time.time_step,
                         (stroke - tools.punch_travel()) / speed);
           {
@@ -486,7 +602,8 @@ namespace formsolve
                       stats.n_active > 0 ? eps_min : 0.,
                       eps_max,
                       double(step_max_linear_iterations),
-                      step_condition});
+                      step_condition,
+                      double(dof_handler.n_dofs())});
           history_file.write_row(row);
 
           const double left = wall / travel * (stroke - travel);
@@ -516,7 +633,8 @@ namespace formsolve
           // Machine-readable totals for benchmarks (doc/performance.md).
           std::ofstream f(prm.output.directory + "/run-summary.txt");
           f << "ranks = " << Utilities::MPI::n_mpi_processes(comm)
-            << "\ndofs = " << summary.n_dofs
+            << "\ndofs = " << summary.n_dofs << "\nmean_dofs = "
+            << summary.dof_steps / std::max(1u, summary.steps)
             << "\ncells = " << tria.n_global_active_cells()
             << "\nsteps = " << summary.steps
             << "\nnewton_iterations = " << summary.newton_iterations

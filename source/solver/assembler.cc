@@ -324,6 +324,27 @@ namespace formsolve
     }
 
     template <int dim>
+    double
+    Assembler<dim>::strain_integral(const DoFHandler<dim>     &dof_handler,
+                                    const Mapping<dim>        &mapping,
+                                    const HistoryStorage<dim> &history) const
+    {
+      FEValues<dim> fv(mapping, dof_handler.get_fe(), full, update_JxW_values);
+      double        sum = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fv.reinit(cell);
+            const auto data = history.get_data(cell);
+            for (unsigned int q = 0; q < full.size(); ++q)
+              sum += data[q]->strain * fv.JxW(q);
+          }
+      return Utilities::MPI::sum(
+        sum,
+        dof_handler.get_triangulation().get_communicator());
+    }
+
+    template <int dim>
     double Assembler<dim>::internal_power(const DoFHandler<dim> &dof_handler,
                                           const Mapping<dim>    &mapping,
                                           const VectorType      &v,

@@ -135,6 +135,24 @@ namespace formsolve
     }
 
     template <int dim>
+    double ProfileTool<dim>::distance_to_radius(const Point<dim> &x) const
+    {
+      if (planform.kind == Planform<dim>::Kind::unbounded)
+        return std::numeric_limits<double>::infinity();
+      // In the (a, b) section the arc is the quarter circle of radius R about
+      // (R, R) between (0, R) and (R, 0).
+      const Point<dim> p = x - offset;
+      Tensor<1, dim>   grad_rho;
+      const double     a  = side_a * planform.distance(p, grad_rho);
+      const double     b  = side_b * (p[dim - 1] - z_face);
+      const double     R  = profile_radius;
+      const double     as = a - R, bs = b - R;
+      if (as <= 0 && bs <= 0)
+        return std::abs(std::sqrt(as * as + bs * bs) - R);
+      return std::min(std::hypot(a, b - R), std::hypot(a - R, b));
+    }
+
+    template <int dim>
     void ProfileTool<dim>::advance(const double dt)
     {
       offset += dt * tool_velocity;

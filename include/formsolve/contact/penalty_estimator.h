@@ -56,6 +56,9 @@ namespace formsolve
         return false;
       }
 
+      /// Forget per-node state (the contact nodes changed: new mesh).
+      virtual void reset() {}
+
       /// One line on the last estimate, for the iteration log.
       virtual std::string summary() const { return ""; }
 
@@ -97,6 +100,13 @@ namespace formsolve
                               const tools::ToolSet<dim> &tools,
                               const MPI_Comm             comm) override;
       std::string summary() const override;
+      void        reset() override
+      {
+        last_active.clear();
+        last_epsilon.clear();
+        scale.clear();
+        previous.clear();
+      }
       std::string name() const override
       {
         return strict ? "adaptive-strict" : "adaptive";
@@ -144,6 +154,7 @@ namespace formsolve
                               const tools::ToolSet<dim> &tools,
                               const MPI_Comm             comm) override;
       std::string summary() const override { return inner->summary(); }
+      void        reset() override { inner->reset(); }
       std::string name() const override
       {
         return "augmented-lagrangian (" + inner->name() + ")";

@@ -46,6 +46,28 @@ namespace formsolve
       void        validate() const;
     };
 
+    /// Subsection "Mesh refinement": adaptive refinement near tool radii and
+    /// by an error indicator (p4est; levels count from the initial mesh).
+    struct MeshRefinement
+    {
+      unsigned int interval;        // steps between adaptations, 0: off
+      unsigned int punch_level;     // max level near the punch profile radius
+      unsigned int die_level;       // ... die profile radius
+      unsigned int holder_level;    // ... blank-holder profile radius
+      double       band_width;      // mm from the radius arc, current config.
+      double       coarsen_factor;  // coarsen beyond this * band width
+      std::string  indicator;       // none | kelly
+      unsigned int indicator_level; // max level the indicator may refine to
+      double       refine_fraction, coarsen_fraction; // of the cells
+      unsigned int min_layers; // element layers at the radii, at least
+
+      static void declare(ParameterHandler &prm);
+      void        parse(ParameterHandler &prm);
+      /// Needs Mesh/Layers through thickness.
+      void validate(const unsigned int layers) const;
+      bool enabled() const { return interval > 0; }
+    };
+
     /// Subsection "Material": flow stress and the flow-formulation constants.
     struct Material
     {
@@ -177,6 +199,7 @@ namespace formsolve
     {
       Geometry        geometry;
       Mesh            mesh;
+      MeshRefinement  refinement;
       Material        material;
       Tools           tools;
       Contact         contact;

@@ -16,6 +16,8 @@
 #include <formsolve/contact/penalty_estimator.h>
 #include <formsolve/material/rigid_viscoplastic.h>
 #include <formsolve/parameters/parameters.h>
+#include <formsolve/simulation/history_file.h>
+#include <formsolve/simulation/mesh_refinement.h>
 #include <formsolve/solver/assembler.h>
 #include <formsolve/solver/linear_solver.h>
 #include <formsolve/solver/newton_solver.h>
@@ -35,7 +37,8 @@ namespace formsolve
       unsigned int linear_iterations = 0;
       double       wall_time         = 0;
       double       newton_wall_time  = 0; // spent inside Newton iterations
-      double       n_dofs            = 0;
+      double       n_dofs            = 0; // largest over the run
+      double       dof_steps         = 0; // sum over steps of the DoFs
       double       peak_memory_kb = 0; // peak resident set, summed over ranks
     };
 
@@ -57,6 +60,13 @@ namespace formsolve
       using VectorType = dealii::TrilinosWrappers::MPI::Vector;
 
       void setup_mesh_and_dofs();
+      /// DoFs, constraints, matrix, vectors, mapping and contact nodes of the
+      /// current mesh (after creation or adaptation).
+      void setup_dofs();
+      /// Refine and coarsen by the Mesh refinement criteria, carrying the
+      /// velocity, displacement and history over; logs a row of
+      /// refinement.csv. Returns whether the mesh changed.
+      bool adapt_mesh(const unsigned int step);
       void check_initial_scene();
       void prepare_output_directory();
       void write_output(const unsigned int step);
@@ -115,6 +125,8 @@ namespace formsolve
       std::vector<double>                             epsilon;
       std::vector<bool>                               last_active;
       std::unique_ptr<solver::LinearSolver>           linear_solver;
+      RefinementCriteria<dim>                         refinement;
+      std::unique_ptr<HistoryFile>                    refinement_log;
 
       double dt          = 0;
       double f_scale     = 0;

@@ -97,6 +97,12 @@ namespace formsolve
       double volume(const dealii::DoFHandler<dim> &dof_handler,
                     const dealii::Mapping<dim>    &mapping) const;
 
+      /// Volume integral of the equivalent plastic strain (mm^3), current
+      /// configuration: what refinement must carry over.
+      double strain_integral(const dealii::DoFHandler<dim> &dof_handler,
+                             const dealii::Mapping<dim>    &mapping,
+                             const HistoryStorage<dim>     &history) const;
+
       /// Plastic power int sigma_bar rate dV plus the volumetric term (W = N
       /// mm/s).
       double internal_power(const dealii::DoFHandler<dim> &dof_handler,

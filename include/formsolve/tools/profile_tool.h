@@ -53,6 +53,7 @@ namespace formsolve
 
       double         signed_distance(const Point<dim> &p,
                                      Tensor<1, dim>   &normal) const override;
+      double         distance_to_radius(const Point<dim> &p) const override;
       Tensor<1, dim> velocity() const override { return tool_velocity; }
       void           advance(const double dt) override;
       double         travel() const override { return travelled; }

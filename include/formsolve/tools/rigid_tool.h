@@ -4,6 +4,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <limits>
 #include <string>
 
 namespace formsolve
@@ -31,6 +32,13 @@ namespace formsolve
         Tensor<1, dim> n;
         const double   d = signed_distance(p, n);
         return p - d * n;
+      }
+
+      /// Distance from @p p to the tool's profile-radius arc, where the sheet
+      /// bends (mm); infinite for tools without one. Drives mesh refinement.
+      virtual double distance_to_radius(const Point<dim> & /*p*/) const
+      {
+        return std::numeric_limits<double>::infinity();
       }
 
       /// Rigid translation velocity of the tool (mm/s).
