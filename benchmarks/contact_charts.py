@@ -12,7 +12,7 @@
 
 Each run goes to results/contact-charts/<group>/<name>/ and is skipped when its
 status file exists (--force reruns). CSV and PNG files are written to doc/.
-Usage: /usr/bin/python3 benchmarks/contact_charts.py [--jobs N] [--force]
+Usage: bash benchmarks/contact-charts.sh (or /usr/bin/python3 benchmarks/contact_charts.py) [--jobs N] [--force]
        [--groups speed,stability,condition,map]
 """
 import argparse
@@ -208,9 +208,7 @@ def chart_speed(runs, plt):
                 y = None
             failed = r not in ok
             c = COLORS.get(r["kind"], "k")
-            if y is None:  # failed before any row: mark at the top
-                ax.annotate("%s: %s" % (r["name"], r["status"]), (r["wall"], 1.0), xycoords=("data", "axes fraction"),
-                            rotation=90, fontsize=6, va="top", color="tab:red")
+            if y is None:  # failed before any row: listed below
                 continue
             ax.scatter(r["wall"], y, marker="x" if failed else "o", s=40, color=c)
             tag = r["name"].replace("adaptive-strict", "strict").replace("fixed-", "")
@@ -218,9 +216,14 @@ def chart_speed(runs, plt):
                 tag += " FAILED (%s, %.1f mm)" % (r["status"], r["final_travel"])
             ax.annotate(tag, (r["wall"], y), fontsize=6, xytext=(3, 3), textcoords="offset points",
                         color="tab:red" if failed else "k")
+        early = ["%s (%s in step %d, %.0f s)" % (r["name"], r["status"], r["steps"] + 1, r["wall"])
+                 for r in runs if r not in ok and r["steps"] == 0]
+        if early:
+            ax.text(0.98, 0.98, "failed at once:\n" + "\n".join(early), transform=ax.transAxes, fontsize=7,
+                    ha="right", va="top", color="tab:red")
         ax.set_xscale("log")
         ax.set_yscale("log")
-        ax.set_xlabel("wall time of the run (s, 1 rank)")
+        ax.set_xlabel("wall time of the run (s, 1 rank, 2 runs at a time on 2 cores)")
         ax.set_ylabel(label)
         ax.grid(True, which="both", alpha=0.3)
     axes[0].axhline(1e-3, color="k", lw=0.8, ls="--")
@@ -311,7 +314,13 @@ def chart_condition(runs, plt):
                         ax.annotate("%s d=%g: %s" % (s, r["delta"], r["status"]), (0.02, 0.9 - 0.05 * DELTAS.index(r["delta"])),
                                     xycoords="axes fraction", fontsize=7, color="tab:red")
         ax.set_xscale("log")
-        ax.set_yscale("log")
+        if any(r["solver"] == solver and r["status"] in ("converged", "penetration > delta") and r[key] > 0
+               for r in runs):
+            ax.set_yscale("log")
+        else:
+            ax.set_xlim(5, 2e10)
+            ax.text(0.5, 0.5, "no run completed:\nsee the status of each run", transform=ax.transAxes,
+                    ha="center", color="tab:red")
         ax.set_xlabel("fixed penalty factor (N/mm^3)")
         ax.set_ylabel(label)
         ax.grid(True, which="both", alpha=0.3)

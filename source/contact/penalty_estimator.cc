@@ -34,6 +34,7 @@ namespace formsolve
         , strict(strict)
         , projection(p.adaptive_estimate == "projection")
         , damping(p.damping)
+        , target(p.target_fraction)
     {}
 
     template <int dim>
@@ -68,7 +69,7 @@ namespace formsolve
         if (active[k])
           {
             const auto  &pair  = set.pairs[k];
-            const double delta = tools.allowed_penetration(pair.tool);
+            const double delta = target * tools.allowed_penetration(pair.tool);
             const double move  = (-delta - pair.predicted_gap) / dt;
             for (unsigned int a = 0; a < dim; ++a)
               dv[set.nodes[pair.node].dofs[a]] += move * pair.normal[a];
@@ -102,9 +103,10 @@ namespace formsolve
             }
           // Stiffness in displacement units (N/mm): K_b carries 1/dt.
           const double stiffness = std::max(K_nn, 0.) / dt;
-          double eps = std::clamp(force / tools.allowed_penetration(pair.tool),
-                                  lower * stiffness,
-                                  upper * stiffness);
+          double       eps =
+            std::clamp(force / (target * tools.allowed_penetration(pair.tool)),
+                       lower * stiffness,
+                       upper * stiffness);
           // Far from convergence the estimate can jump by orders of magnitude
           // between iterations; let it change by at most a factor 'damping'
           // per estimate, starting from the fixed penalty of the tool.

@@ -81,6 +81,41 @@ namespace formsolve
       return cl;
     }
 
+    namespace
+    {
+      std::string expand_includes(const std::filesystem::path &file,
+                                  const unsigned int           depth)
+      {
+        std::ifstream in(file);
+        AssertThrow(in.good(),
+                    ExcMessage("cannot open included file " + file.string()));
+        AssertThrow(depth < 16,
+                    ExcMessage("include nesting deeper than 16 at " +
+                               file.string()));
+        std::ostringstream out;
+        std::string        line;
+        while (std::getline(in, line))
+          {
+            const auto first = line.find_first_not_of(" \t");
+            if (first != std::string::npos &&
+                (line.compare(first, 8, "include ") == 0 ||
+                 line.compare(first, 8, "INCLUDE ") == 0))
+              {
+                std::string name = line.substr(first + 8);
+                name.erase(0, name.find_first_not_of(" \t"));
+                name.erase(name.find_last_not_of(" \t\r") + 1);
+                std::filesystem::path inc(name);
+                if (inc.is_relative())
+                  inc = file.parent_path() / inc;
+                out << expand_includes(inc, depth + 1);
+              }
+            else
+              out << line << '\n';
+          }
+        return out.str();
+      }
+    } // namespace
+
     void read_input(dealii::ParameterHandler &prm, const CommandLine &cl)
     {
       {
@@ -88,23 +123,20 @@ namespace formsolve
         AssertThrow(in.good(),
                     ExcMessage("cannot open input file " + cl.input_file));
       }
-      // 'include' lines are resolved relative to the including file: parse
-      // from its folder. Other paths (mesh, output) stay relative to the
-      // working directory; they are only used after parsing.
-      const auto cwd  = std::filesystem::current_path();
-      const auto path = std::filesystem::absolute(cl.input_file);
+      // 'include' lines are resolved relative to the file that contains
+      // them, at any depth (deal.II resolves them against the working
+      // directory): expand them here. Other paths (mesh, output) stay
+      // relative to the working directory.
+      std::string text;
       try
         {
-          std::filesystem::current_path(path.parent_path());
-          prm.parse_input(path.filename().string(),
-                          "",
-                          /*skip_undefined=*/false,
-                          /*assert_mandatory_entries_are_found=*/false);
-          std::filesystem::current_path(cwd);
+          text = expand_includes(std::filesystem::absolute(cl.input_file), 0);
+          prm.parse_input_from_string(text,
+                                      cl.input_file,
+                                      /*skip_undefined=*/false);
         }
       catch (const dealii::ExceptionBase &e)
         {
-          std::filesystem::current_path(cwd);
           std::ostringstream s;
           e.print_info(s);
           AssertThrow(false,

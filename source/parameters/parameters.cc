@@ -582,6 +582,13 @@ namespace formsolve
         "and projection overestimates by orders of magnitude "
         "(doc/contact.md).");
       prm.declare_entry(
+        "Target fraction",
+        "1",
+        Double(0.01, 1),
+        "Adaptive estimates aim at this fraction of 'Allowed penetration' "
+        "(-). Below 1, adaptive-strict needs fewer re-solves, since fewer "
+        "nodes end a step deeper than allowed.");
+      prm.declare_entry(
         "Damping",
         "10",
         Double(1),
@@ -632,6 +639,7 @@ namespace formsolve
       freeze              = prm.get_bool("Freeze factors");
       adaptive_estimate   = prm.get("Adaptive estimate");
       damping             = prm.get_double("Damping");
+      target_fraction     = prm.get_double("Target fraction");
       max_status_flips    = prm.get_integer("Max status flips");
       max_strict_passes   = prm.get_integer("Max strict passes");
       regularisation_velocity =

@@ -22,9 +22,9 @@ namespace formsolve
       for (unsigned int t = 0; t < tools.size(); ++t)
         {
           const std::string &key = tools.key(t);
-          tool_level.push_back(key == "punch" ? p.punch_level :
-                               key == "die"   ? p.die_level :
-                                                p.holder_level);
+          tool_level.push_back(key == "punch" ? p.punch_level
+                               : key == "die" ? p.die_level
+                                              : p.holder_level);
         }
     }
 
@@ -64,18 +64,21 @@ namespace formsolve
       if (kelly)
         {
           Vector<float> indicator(tria.n_active_cells());
-          KellyErrorEstimator<dim>::estimate(
-            mapping,
-            dof_handler,
-            QGauss<dim - 1>(dof_handler.get_fe().degree + 1),
-            {},
-            velocity,
-            indicator);
-          parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-            tria, indicator, prm.refine_fraction, prm.coarsen_fraction);
+          KellyErrorEstimator<dim>::estimate(mapping,
+                                             dof_handler,
+                                             QGauss<dim - 1>(
+                                               dof_handler.get_fe().degree + 1),
+                                             {},
+                                             velocity,
+                                             indicator);
+          parallel::distributed::GridRefinement::
+            refine_and_coarsen_fixed_number(tria,
+                                            indicator,
+                                            prm.refine_fraction,
+                                            prm.coarsen_fraction);
         }
 
-      RefinementFlags flags;
+      RefinementFlags  flags;
       const Point<dim> centre = [] {
         Point<dim> c;
         for (unsigned int d = 0; d < dim; ++d)
@@ -86,18 +89,23 @@ namespace formsolve
         {
           if (!cell->is_locally_owned())
             continue;
-          const Point<dim> x = mapping.transform_unit_to_real_cell(cell, centre);
-          const double     h = cell->diameter();
+          const Point<dim> x =
+            mapping.transform_unit_to_real_cell(cell, centre);
           const unsigned int level = cell->level();
-          const unsigned int refine_to = band_level(x, h, tools, 1.);
+          // Size of the level-0 ancestor: children must not leave the band
+          // just because they are smaller than the cell that entered it.
+          const double       h0        = cell->diameter() * (1u << level);
+          const unsigned int refine_to = band_level(x, h0, tools, 1.);
+          // A child's centre lies at most h0/4 beyond its parent's: with the
+          // margin h0 (not h0/2) a cell refined now is kept next time.
           const unsigned int keep_to =
-            band_level(x, h, tools, prm.coarsen_factor);
-          const bool by_indicator = kelly && cell->refine_flag_set() &&
-                                    level < prm.indicator_level;
-          const bool refine  = level < refine_to || by_indicator;
-          const bool coarsen = !refine && level > keep_to &&
-                               (!kelly || cell->coarsen_flag_set() ||
-                                level > prm.indicator_level);
+            band_level(x, 2 * h0, tools, prm.coarsen_factor);
+          const bool by_indicator =
+            kelly && cell->refine_flag_set() && level < prm.indicator_level;
+          const bool refine = level < refine_to || by_indicator;
+          const bool coarsen =
+            !refine && level > keep_to &&
+            (!kelly || cell->coarsen_flag_set() || level > prm.indicator_level);
           cell->clear_refine_flag();
           cell->clear_coarsen_flag();
           if (refine)
@@ -119,8 +127,8 @@ namespace formsolve
 
     template <int dim>
     void store_parent_history(
-      const Triangulation<dim> &tria,
-      const Quadrature<dim>    &quadrature,
+      const Triangulation<dim>                &tria,
+      const Quadrature<dim>                   &quadrature,
       CellDataStorage<typename Triangulation<dim>::cell_iterator,
                       QuadraturePointHistory> &history)
     {

@@ -128,6 +128,7 @@ namespace formsolve
       std::vector<double> previous;
       bool                projection; // the published estimate with K_b dv
       double              damping;    // max change factor per estimate
+      double              target;     // aim at this fraction of delta
     };
 
     /// Augmented Lagrangian (Uzawa) on the factors of an inner strategy

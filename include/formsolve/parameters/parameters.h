@@ -130,6 +130,7 @@ namespace formsolve
       bool         freeze;            // keep eps once the contact set settles
       std::string  adaptive_estimate; // force | projection
       double       damping;           // max change factor of eps per estimate
+      double       target_fraction;   // estimates aim at this * delta
       unsigned int max_status_flips;  // then the pair's status is locked
       unsigned int max_strict_passes; // strict / Uzawa re-solves per step
       double       regularisation_velocity; // mm/s, friction arctan law

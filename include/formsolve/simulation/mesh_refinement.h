@@ -31,11 +31,12 @@ namespace formsolve
     /// ContinuousQuadratureDataTransfer does not coarsen by itself: it packs
     /// the parent's data, which this provides.
     template <int dim>
-    void store_parent_history(
-      const dealii::Triangulation<dim> &tria,
-      const dealii::Quadrature<dim>    &quadrature,
-      dealii::CellDataStorage<typename dealii::Triangulation<dim>::cell_iterator,
-                              QuadraturePointHistory> &history);
+    void
+    store_parent_history(const dealii::Triangulation<dim> &tria,
+                         const dealii::Quadrature<dim>    &quadrature,
+                         dealii::CellDataStorage<
+                           typename dealii::Triangulation<dim>::cell_iterator,
+                           QuadraturePointHistory> &history);
 
     template <int dim>
     class RefinementCriteria
