@@ -202,7 +202,8 @@ namespace formsolve
         "Band width",
         "3",
         Double(0),
-        "Cells whose centre lies within this distance (mm) of a tool's "
+        "Cells whose centre, less half the size of the initial cell they "
+        "came from, lies within this distance (mm) of a tool's "
         "profile-radius arc, in the current configuration, are refined to "
         "that tool's level; make it cover the material that reaches the "
         "radius within 'Interval' steps.");
