@@ -42,6 +42,13 @@ expect missing_input "does-not-exist.prm" "$work/does-not-exist.prm"
 expect blank_inside_tool "Tools/Punch" "$base" --set "Tools/Punch/Gap=-0.5"
 expect zero_time_step "Time stepping/Time step" "$base" --set "Time stepping/Time step=0"
 expect negative_time_step "Time stepping/Time step" "$base" --set "Time stepping/Time step=-1"
+printf 'include no-such-include.prm\n' > "$work/include.prm"
+expect missing_include "no-such-include.prm" "$work/include.prm"
+expect refinement_layers "Mesh refinement/Punch level" "$base" --set "Mesh refinement/Interval=2" \
+  --set "Mesh refinement/Punch level=1" --set "Mesh/Layers through thickness=1"
+expect refinement_no_criterion "Mesh refinement/Interval" "$base" --set "Mesh refinement/Interval=2"
+expect al_no_passes "Contact/Max strict passes" "$base" --set "Contact/Penalty strategy=augmented-lagrangian" \
+  --set "Contact/Max strict passes=0"
 touch "$work/a-file"
 expect unwritable_output "Output/Output directory" "$base" --set "Output/Output directory=$work/a-file/results"
 exit $fail

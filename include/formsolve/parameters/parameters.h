@@ -120,19 +120,19 @@ namespace formsolve
     /// Subsection "Contact".
     struct Contact
     {
-      std::string penalty_strategy; // fixed | adaptive | adaptive-strict |
-                                    // augmented-lagrangian
-      std::string  al_penalty;      // fixed | adaptive: factors under Uzawa
-      double       penalty_factor;  // N/mm^3 (pressure per mm of penetration)
+      std::string penalty_strategy;      // fixed | adaptive | adaptive-strict |
+                                         // augmented-lagrangian
+      std::string  al_penalty = "fixed"; // factors under Uzawa
+      double       penalty_factor; // N/mm^3 (pressure per mm of penetration)
       double       allowed_penetration; // delta (mm)
       double       lower_bound;         // eps_k dt / K_kk, adaptive
       double       upper_bound;
-      bool         freeze;            // keep eps once the contact set settles
-      std::string  adaptive_estimate; // force | projection
-      double       damping;           // max change factor of eps per estimate
-      double       target_fraction;   // estimates aim at this * delta
-      unsigned int max_status_flips;  // then the pair's status is locked
-      unsigned int max_strict_passes; // strict / Uzawa re-solves per step
+      bool         freeze;              // keep eps once the contact set settles
+      std::string  adaptive_estimate;   // force | projection
+      double       damping;             // max change factor of eps per estimate
+      double       target_fraction = 1; // estimates aim at this * delta
+      unsigned int max_status_flips;    // then the pair's status is locked
+      unsigned int max_strict_passes;   // strict / Uzawa re-solves per step
       double       regularisation_velocity; // mm/s, friction arctan law
       double       search_distance; // mm, nodes farther than this are skipped
 
@@ -176,7 +176,7 @@ namespace formsolve
       std::string  iterative_solver; // GMRES | CG
       double       tolerance;
       unsigned int max_iterations;
-      unsigned int condition_iterations; // Lanczos estimate, 0: off
+      unsigned int condition_iterations = 0; // Lanczos estimate, 0: off
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);
