@@ -306,21 +306,30 @@ namespace formsolve
     }
 
     template <int dim>
-    double Assembler<dim>::volume(const DoFHandler<dim> &dof_handler,
-                                  const Mapping<dim>    &mapping) const
+    double Assembler<dim>::integrate(const DoFHandler<dim>     &dof_handler,
+                                     const Mapping<dim>        &mapping,
+                                     const HistoryStorage<dim> *history) const
     {
       FEValues<dim> fv(mapping, dof_handler.get_fe(), full, update_JxW_values);
-      double        vol = 0;
+      double        sum = 0;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             fv.reinit(cell);
             for (unsigned int q = 0; q < full.size(); ++q)
-              vol += fv.JxW(q);
+              sum +=
+                (history ? history->get_data(cell)[q]->strain : 1.) * fv.JxW(q);
           }
       return Utilities::MPI::sum(
-        vol,
+        sum,
         dof_handler.get_triangulation().get_communicator());
+    }
+
+    template <int dim>
+    double Assembler<dim>::volume(const DoFHandler<dim> &dof_handler,
+                                  const Mapping<dim>    &mapping) const
+    {
+      return integrate(dof_handler, mapping, nullptr);
     }
 
     template <int dim>
@@ -329,19 +338,7 @@ namespace formsolve
                                     const Mapping<dim>        &mapping,
                                     const HistoryStorage<dim> &history) const
     {
-      FEValues<dim> fv(mapping, dof_handler.get_fe(), full, update_JxW_values);
-      double        sum = 0;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            fv.reinit(cell);
-            const auto data = history.get_data(cell);
-            for (unsigned int q = 0; q < full.size(); ++q)
-              sum += data[q]->strain * fv.JxW(q);
-          }
-      return Utilities::MPI::sum(
-        sum,
-        dof_handler.get_triangulation().get_communicator());
+      return integrate(dof_handler, mapping, &history);
     }
 
     template <int dim>

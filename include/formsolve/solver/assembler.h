@@ -114,6 +114,12 @@ namespace formsolve
       const dealii::Quadrature<dim> &quadrature() const { return full; }
 
     private:
+      /// int w dV over the locally owned cells, summed over ranks (current
+      /// configuration); w = 1, or the equivalent strain of @p history.
+      double integrate(const dealii::DoFHandler<dim> &dof_handler,
+                       const dealii::Mapping<dim>    &mapping,
+                       const HistoryStorage<dim>     *history) const;
+
       /// tr(D) + ln(J/J0)/dt at the reduced quadrature points of @p cell:
       /// the volumetric rate with the accumulated volume error corrected.
       template <typename Iterator>
