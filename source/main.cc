@@ -1,13 +1,29 @@
-// formsolve: parse the command line and the .prm file, validate, run.
+// formsolve: parse the command line and the .prm file, validate, dispatch on
+// the model (2-D axisymmetric or 3-D), run, and report errors.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <formsolve/parameters/command_line.h>
 #include <formsolve/parameters/parameters.h>
-#include <formsolve/simulation/simulation.h>
+#include <formsolve/simulation/time_loop.h>
 
 #include <iostream>
 #include <sstream>
+
+namespace
+{
+  template <int dim>
+  void run(const formsolve::parameters::Run         &run,
+           const dealii::ParameterHandler           &prm,
+           const formsolve::parameters::CommandLine &cl)
+  {
+    formsolve::simulation::TimeLoop<dim> loop(run, prm);
+    if (cl.validate)
+      loop.validate_scene();
+    else
+      loop.run();
+  }
+} // namespace
 
 int main(int argc, char **argv)
 {
@@ -35,14 +51,13 @@ int main(int argc, char **argv)
                   ExcMessage("no input file given\n" +
                              formsolve::parameters::CommandLine::usage()));
       formsolve::parameters::read_input(prm, cl);
-      formsolve::parameters::Run run;
-      run.parse(prm);
-      run.validate();
-      formsolve::simulation::Simulation<3> simulation(run, prm);
-      if (cl.validate)
-        simulation.validate_scene();
+      formsolve::parameters::Run parameters;
+      parameters.parse(prm);
+      parameters.validate();
+      if (formsolve::model::space_dimension(parameters.geometry.model) == 2)
+        run<2>(parameters, prm, cl);
       else
-        simulation.run();
+        run<3>(parameters, prm, cl);
     }
   catch (const ExceptionBase &e)
     {

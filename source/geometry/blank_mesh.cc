@@ -2,9 +2,11 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
 #include <formsolve/geometry/blank_mesh.h>
+#include <formsolve/model/dimensions.h>
 
 #include <unistd.h>
 
@@ -18,6 +20,8 @@ namespace formsolve
   namespace geometry
   {
     using namespace dealii;
+    using model::Model;
+    using parameters::BlankShape;
 
     namespace
     {
@@ -69,25 +73,38 @@ namespace formsolve
           std::filesystem::remove(msh);
       }
 
+      /// The planform of the modelled part: quarter x, y >= 0; half x >= 0.
       void create_planform(const parameters::Geometry &g, Triangulation<2> &t)
       {
         const double R = 0.5 * g.blank_diameter;
-        if (g.blank_shape == "disk")
-          GridGenerator::hyper_ball(t, Point<2>(), R);
-        else if (g.blank_shape == "quarter disk")
-          GridGenerator::quarter_hyper_ball(t, Point<2>(), R);
-        else if (g.blank_shape == "rectangle" ||
-                 g.blank_shape == "quarter rectangle")
+        if (g.blank_shape == BlankShape::round)
           {
-            const bool   quarter = (g.blank_shape == "quarter rectangle");
-            const double lx = quarter ? 0.5 * g.blank_length : g.blank_length;
-            const double ly = quarter ? 0.5 * g.blank_width : g.blank_width;
+            if (g.model == Model::quarter)
+              GridGenerator::quarter_hyper_ball(t, Point<2>(), R);
+            else if (g.model == Model::half)
+              {
+                GridGenerator::half_hyper_ball(t, Point<2>(), R);
+                // Turn it to x >= 0 (a rotation keeps the cells' orientation).
+                double x = 0;
+                for (const auto &cell : t.active_cell_iterators())
+                  x += cell->center()[0];
+                if (x < 0)
+                  GridTools::rotate(M_PI, t);
+              }
+            else
+              GridGenerator::hyper_ball(t, Point<2>(), R);
+          }
+        else if (g.blank_shape == BlankShape::rectangle)
+          {
+            const bool   half_x = model::symmetric_in_x(g.model);
+            const bool   half_y = model::symmetric_in_y(g.model);
+            const double lx = half_x ? 0.5 * g.blank_length : g.blank_length;
+            const double ly = half_y ? 0.5 * g.blank_width : g.blank_width;
             const double h  = std::min(lx, ly);
             const std::vector<unsigned int> reps = {
               std::max(1u, static_cast<unsigned int>(std::round(lx / h))),
               std::max(1u, static_cast<unsigned int>(std::round(ly / h)))};
-            const Point<2> lo =
-              quarter ? Point<2>() : Point<2>(-lx / 2, -ly / 2);
+            const Point<2> lo(half_x ? 0. : -lx / 2, half_y ? 0. : -ly / 2);
             GridGenerator::subdivided_hyper_rectangle(t,
                                                       reps,
                                                       lo,
@@ -96,43 +113,82 @@ namespace formsolve
         else
           read_planform(g.mesh_file, t);
       }
+
+      void create(const parameters::Geometry              &g,
+                  const parameters::Mesh                  &m,
+                  parallel::distributed::Triangulation<3> &tria)
+      {
+        Triangulation<2> planform;
+        create_planform(g, planform);
+        planform.refine_global(m.refinements);
+
+        // Drop the manifolds: the refined planform becomes the coarse mesh,
+        // so that later refinement near tool radii stays inside the sheet.
+        Triangulation<2> flat;
+        GridGenerator::flatten_triangulation(planform, flat);
+
+        std::vector<double> z(m.layers + 1);
+        for (unsigned int k = 0; k <= m.layers; ++k)
+          z[k] = g.thickness * k / m.layers;
+        Triangulation<3> serial;
+        GridGenerator::extrude_triangulation(flat, z, serial);
+        const double tol = 1e-6 * g.thickness;
+        for (const auto &cell : serial.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                const Point<3>     c  = face->center();
+                types::boundary_id id = free_surface;
+                if (std::abs(c[2]) > tol && std::abs(c[2] - g.thickness) > tol)
+                  {
+                    if (model::symmetric_in_x(g.model) && std::abs(c[0]) < tol)
+                      id = symmetry_x;
+                    else if (model::symmetric_in_y(g.model) &&
+                             std::abs(c[1]) < tol)
+                      id = symmetry_y;
+                  }
+                face->set_boundary_id(id);
+              }
+        tria.copy_triangulation(serial);
+      }
+
+      void create(const parameters::Geometry              &g,
+                  const parameters::Mesh                  &m,
+                  parallel::distributed::Triangulation<2> &tria)
+      {
+        Assert(g.model == Model::axisymmetric, ExcInternalError());
+        const double     R = 0.5 * g.blank_diameter;
+        Triangulation<2> serial;
+        GridGenerator::subdivided_hyper_rectangle(serial,
+                                                  {2u << m.refinements,
+                                                   m.layers},
+                                                  Point<2>(0, 0),
+                                                  Point<2>(R, g.thickness));
+        const double tol = 1e-6 * g.thickness;
+        for (const auto &cell : serial.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              face->set_boundary_id(face->center()[0] < tol ? axis
+                                                            : free_surface);
+        tria.copy_triangulation(serial);
+      }
     } // namespace
 
-    void create_blank_mesh(const parameters::Geometry              &g,
-                           const parameters::Mesh                  &m,
-                           parallel::distributed::Triangulation<3> &tria)
+    template <int dim>
+    void create_blank_mesh(const parameters::Geometry                &g,
+                           const parameters::Mesh                    &m,
+                           parallel::distributed::Triangulation<dim> &tria)
     {
-      Triangulation<2> planform;
-      create_planform(g, planform);
-      planform.refine_global(m.refinements);
-
-      // Drop the manifolds: the refined planform becomes the coarse mesh, so
-      // that later refinement near tool radii stays inside the sheet.
-      Triangulation<2> flat;
-      GridGenerator::flatten_triangulation(planform, flat);
-
-      std::vector<double> z(m.layers + 1);
-      for (unsigned int k = 0; k <= m.layers; ++k)
-        z[k] = g.thickness * k / m.layers;
-      Triangulation<3> serial;
-      GridGenerator::extrude_triangulation(flat, z, serial);
-      const double tol = 1e-6 * g.thickness;
-      for (const auto &cell : serial.active_cell_iterators())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary())
-            {
-              const Point<3>     c  = face->center();
-              types::boundary_id id = free_surface;
-              if (std::abs(c[2]) > tol && std::abs(c[2] - g.thickness) > tol)
-                {
-                  if (g.symmetric_in_x() && std::abs(c[0]) < tol)
-                    id = symmetry_x;
-                  else if (g.symmetric_in_y() && std::abs(c[1]) < tol)
-                    id = symmetry_y;
-                }
-              face->set_boundary_id(id);
-            }
-      tria.copy_triangulation(serial);
+      AssertThrow(model::space_dimension(g.model) == dim, ExcInternalError());
+      create(g, m, tria);
     }
+
+#define INSTANTIATE(dim)                \
+  template void create_blank_mesh<dim>( \
+    const parameters::Geometry &,       \
+    const parameters::Mesh &,           \
+    parallel::distributed::Triangulation<dim> &);
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
   } // namespace geometry
 } // namespace formsolve

@@ -8,25 +8,23 @@ namespace formsolve
   {
     using namespace dealii;
 
-    template <int dim>
-    RigidViscoplastic<dim>::RigidViscoplastic(const parameters::Material &p)
+    RigidViscoplastic::RigidViscoplastic(const parameters::Material &p)
         : law(p)
         , cutoff(p.limiting_strain_rate)
         , bulk(p.volumetric_penalty * p.strength_coefficient /
                p.reference_strain_rate)
     {}
 
-    template <int dim>
-    PointResponse<dim>
-    RigidViscoplastic<dim>::evaluate(const SymmetricTensor<2, dim> &D,
-                                     const double                   strain_old,
-                                     const double                   dt,
-                                     const bool newton) const
+    PointResponse RigidViscoplastic::evaluate(const SymmetricTensor<2, 3> &D,
+                                              const double strain_old,
+                                              const double dt,
+                                              const bool   newton) const
     {
-      PointResponse<dim>            out;
-      const SymmetricTensor<2, dim> e    = deviator(D);
-      const double                  rate = std::sqrt(2. / 3. * (e * e));
-      out.equivalent_strain_rate         = rate;
+      PointResponse               out;
+      const SymmetricTensor<2, 3> e    = deviator(D);
+      const double                rate = std::sqrt(2. / 3. * (e * e));
+      out.equivalent_strain_rate       = rate;
+      out.strain_rate_deviator         = e;
 
       if (rate <= cutoff)
         {
@@ -36,8 +34,7 @@ namespace formsolve
           out.viscosity         = s / (3. * cutoff);
           out.flow_stress       = s * rate / cutoff;
           out.deviatoric_stress = 2. * out.viscosity * e;
-          out.strain_rate_deviator = e;
-          out.beta                 = 0;
+          out.beta              = 0;
           return out;
         }
 
@@ -48,16 +45,12 @@ namespace formsolve
       const double ds =
         dt * law.d_strain(strain, rate) + law.d_rate(strain, rate);
 
-      out.flow_stress          = s;
-      out.viscosity            = s / (3. * rate);
-      out.deviatoric_stress    = 2. * out.viscosity * e;
-      out.strain_rate_deviator = e;
+      out.flow_stress       = s;
+      out.viscosity         = s / (3. * rate);
+      out.deviatoric_stress = 2. * out.viscosity * e;
       out.beta =
         newton ? (4. / 9.) * (ds * rate - s) / (rate * rate * rate) : 0.;
       return out;
     }
-
-    template class RigidViscoplastic<2>;
-    template class RigidViscoplastic<3>;
   } // namespace material
 } // namespace formsolve

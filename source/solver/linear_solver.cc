@@ -57,7 +57,8 @@ namespace formsolve
                                      const TrilinosWrappers::MPI::Vector  &b)
     {
       estimate_condition(A, b);
-      if (prm.type == "direct")
+      last_matrix = &A;
+      if (prm.type == parameters::LinearSolverType::direct)
         {
           auto &matrix = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
           if (factorised_matrix != &matrix ||
@@ -65,51 +66,69 @@ namespace formsolve
             {
               problem = std::make_unique<Epetra_LinearProblem>();
               problem->SetOperator(&matrix);
-              Amesos factory;
-              direct.reset(factory.Create(prm.direct_solver == "MUMPS"
-                                            ? "Amesos_Mumps"
-                                            : "Amesos_Klu",
+              Amesos     factory;
+              const bool mumps =
+                prm.direct_solver == parameters::DirectSolver::mumps;
+              direct.reset(factory.Create(mumps ? "Amesos_Mumps" : "Amesos_Klu",
                                           *problem));
               AssertThrow(direct != nullptr,
                           ExcMessage(
                             "Linear solver/Direct solver: Amesos has no " +
-                            prm.direct_solver));
+                            std::string(mumps ? "MUMPS" : "KLU")));
               AssertThrow(direct->SymbolicFactorization() == 0,
                           ExcMessage("symbolic factorisation failed"));
               factorised_matrix = &matrix;
               factorised_nnz    = A.n_nonzero_elements();
             }
-          problem->SetLHS(&x.trilinos_vector());
-          problem->SetRHS(
-            const_cast<Epetra_MultiVector *>(&b.trilinos_vector()));
           AssertThrow(direct->NumericFactorization() == 0,
                       ExcMessage(
                         "numeric factorisation failed (singular matrix?)"));
-          AssertThrow(direct->Solve() == 0, ExcMessage("direct solve failed"));
-          return 1;
+          return solve_again(x, b);
         }
 
-      TrilinosWrappers::PreconditionAMG                 amg;
+      amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
       data.elliptic              = true;
       data.higher_order_elements = false;
       data.smoother_sweeps       = 2;
       data.aggregation_threshold = 0.02;
       data.constant_modes        = constant_modes;
-      amg.initialize(A, data);
+      amg->initialize(A, data);
+      return iterate(A, x, b);
+    }
 
+    unsigned int
+    LinearSolver::solve_again(TrilinosWrappers::MPI::Vector       &x,
+                              const TrilinosWrappers::MPI::Vector &b)
+    {
+      Assert(last_matrix != nullptr, ExcInternalError());
+      if (prm.type == parameters::LinearSolverType::direct)
+        {
+          problem->SetLHS(&x.trilinos_vector());
+          problem->SetRHS(
+            const_cast<Epetra_MultiVector *>(&b.trilinos_vector()));
+          AssertThrow(direct->Solve() == 0, ExcMessage("direct solve failed"));
+          return 1;
+        }
+      return iterate(*last_matrix, x, b);
+    }
+
+    unsigned int LinearSolver::iterate(const TrilinosWrappers::SparseMatrix &A,
+                                       TrilinosWrappers::MPI::Vector        &x,
+                                       const TrilinosWrappers::MPI::Vector  &b)
+    {
       SolverControl control(prm.max_iterations, prm.tolerance * b.l2_norm());
-      if (prm.iterative_solver == "CG")
+      if (prm.iterative_solver == parameters::IterativeSolver::cg)
         {
           SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-          cg.solve(A, x, b, amg);
+          cg.solve(A, x, b, *amg);
         }
       else
         {
           SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
             control,
             SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(100));
-          gmres.solve(A, x, b, amg);
+          gmres.solve(A, x, b, *amg);
         }
       return control.last_step();
     }

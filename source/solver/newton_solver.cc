@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 
 namespace formsolve
 {
@@ -40,9 +41,22 @@ namespace formsolve
               linear_its = system.solve(dv);
               report.linear_iterations += linear_its;
             }
+          catch (const dealii::ExceptionBase &e)
+            {
+              // The message of the exception, on one line.
+              std::ostringstream info;
+              e.print_info(info);
+              std::istringstream words(info.str());
+              std::string        message, word;
+              while (words >> word)
+                message += (message.empty() ? "" : " ") + word;
+              report.failure = "linear solver failed (" + message + ")";
+              return report;
+            }
           catch (const std::exception &e)
             {
-              report.failure = "linear solver failed";
+              report.failure =
+                "linear solver failed (" + std::string(e.what()) + ")";
               return report;
             }
           if (!std::isfinite(dv.l2_norm()))
@@ -58,14 +72,15 @@ namespace formsolve
           // the next iteration, so an accepted full step costs one assembly.
           const bool next_newton = fallback == 0 && it >= prm.picard_iterations;
           bool       stalled     = false;
-          const double g0        = system.residual_dot(dv);
+          const double g0        = system.directional_derivative(dv);
           double       alpha = 1, r_trial = 0, a_lo = 0, g_lo = g0;
           for (unsigned int ls = 0;; ++ls)
             {
               trial = v;
               trial.add(alpha, dv);
+              system.set_step_length(alpha);
               r_trial        = system.assemble(trial, next_newton);
-              const double g = system.residual_dot(dv);
+              const double g = system.directional_derivative(dv);
               if (!(g0 < 0) || std::abs(g) <= 0.5 * std::abs(g0) ||
                   (g < 0 && r_trial < r))
                 break;
@@ -99,6 +114,7 @@ namespace formsolve
             }
           picard = !next_newton || fallback > 0;
           v      = trial;
+          system.accept_step();
           if (const double r_new = system.update_penalty(); r_new >= 0)
             r_trial = r_new;
           const bool   changed = system.contact_set_changed();
@@ -114,7 +130,9 @@ namespace formsolve
               << (changed ? "  contact set changed" : "") << std::defaultfloat
               << system.iteration_info() << std::endl;
           if (report.residual <= prm.residual_tolerance &&
-              dv_rel <= prm.correction_tolerance && !changed)
+              dv_rel <= prm.correction_tolerance && !changed &&
+              system.extra_residual() <= prm.residual_tolerance &&
+              alpha * system.extra_correction() <= prm.correction_tolerance)
             {
               report.converged = true;
               return report;

@@ -1,3 +1,4 @@
+#include <formsolve/model/dimensions.h>
 #include <formsolve/tools/profile_tool.h>
 
 #include <algorithm>
@@ -153,15 +154,25 @@ namespace formsolve
     }
 
     template <int dim>
+    double ProfileTool<dim>::lateral_distance(const Point<dim> &x) const
+    {
+      if (planform.kind == Planform<dim>::Kind::unbounded)
+        return std::numeric_limits<double>::infinity();
+      Tensor<1, dim> grad_rho;
+      return side_a * planform.distance(x - offset, grad_rho);
+    }
+
+    template <int dim>
     void ProfileTool<dim>::advance(const double dt)
     {
       offset += dt * tool_velocity;
       travelled += dt * tool_velocity.norm();
     }
 
-    template struct Planform<2>;
-    template struct Planform<3>;
-    template class ProfileTool<2>;
-    template class ProfileTool<3>;
+#define INSTANTIATE(dim)         \
+  template struct Planform<dim>; \
+  template class ProfileTool<dim>;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
   } // namespace tools
 } // namespace formsolve

@@ -1,3 +1,4 @@
+#include <formsolve/model/dimensions.h>
 #include <formsolve/tools/profile_tool.h>
 #include <formsolve/tools/tool_set.h>
 
@@ -6,6 +7,7 @@ namespace formsolve
   namespace tools
   {
     using namespace dealii;
+    using parameters::ToolShape;
 
     namespace
     {
@@ -13,12 +15,12 @@ namespace formsolve
       Planform<dim> planform_of(const parameters::Tool &t)
       {
         Planform<dim> p;
-        if (t.shape == "round")
+        if (t.shape == ToolShape::round)
           {
             p.kind   = Planform<dim>::Kind::circle;
             p.radius = 0.5 * t.diameter;
           }
-        else if (t.shape == "rounded rectangle")
+        else if (t.shape == ToolShape::rounded_rectangle)
           {
             p.kind          = Planform<dim>::Kind::rounded_rectangle;
             p.half_length   = 0.5 * t.length;
@@ -35,8 +37,8 @@ namespace formsolve
     ToolSet<dim>::ToolSet(const parameters::Tools   &p,
                           const parameters::Contact &c,
                           const double               thickness)
-        : stroke(p.punch.stroke)
-        , speed(p.punch.speed)
+        : stroke(p.punch_stroke)
+        , speed(p.punch_speed)
     {
       auto add = [&](const parameters::Tool &t,
                      const std::string      &key,
@@ -61,10 +63,14 @@ namespace formsolve
         keys.push_back(key);
       };
       Tensor<1, dim> down;
-      down[dim - 1] = -p.punch.speed;
+      down[dim - 1] = -p.punch_speed;
       // The punch comes first: punch_index() relies on it.
       add(p.punch, "punch", -1, +1, thickness + p.punch.gap, down);
+      if (p.die.enabled)
+        die = tools.size();
       add(p.die, "die", +1, -1, -p.die.gap, Tensor<1, dim>());
+      if (p.blank_holder.enabled)
+        holder = tools.size();
       add(p.blank_holder,
           "blank_holder",
           +1,
@@ -74,13 +80,28 @@ namespace formsolve
     }
 
     template <int dim>
+    void ToolSet<dim>::set_axial_velocity(const unsigned int i, const double w)
+    {
+      Tensor<1, dim> v;
+      v[dim - 1] = w;
+      tools[i]->set_velocity(v);
+    }
+
+    template <int dim>
+    double ToolSet<dim>::axial_velocity(const unsigned int i) const
+    {
+      return tools[i]->velocity()[dim - 1];
+    }
+
+    template <int dim>
     void ToolSet<dim>::advance(const double dt)
     {
       for (auto &t : tools)
         t->advance(dt);
     }
 
-    template class ToolSet<2>;
-    template class ToolSet<3>;
+#define INSTANTIATE(dim) template class ToolSet<dim>;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
   } // namespace tools
 } // namespace formsolve

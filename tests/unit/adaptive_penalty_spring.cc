@@ -5,7 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
-#include <formsolve/contact/penalty_estimator.h>
+#include <formsolve/contact/strategies/adaptive.h>
 
 #include "check.h"
 
@@ -35,10 +35,11 @@ int main(int argc, char **argv)
   constraints.close();
 
   parameters::Tools tool_prm;
-  tool_prm.punch = {"Punch", true, "flat", 0, 0, 0, 0, 0, 0, 1, 1, 0, 0, delta};
-  tool_prm.die   = tool_prm.punch;
-  tool_prm.die.enabled  = false;
-  tool_prm.blank_holder = tool_prm.die;
+  tool_prm.punch.shape                = parameters::ToolShape::flat;
+  tool_prm.punch.friction_coefficient = 0;
+  tool_prm.punch.allowed_penetration  = delta;
+  tool_prm.die.enabled                = false;
+  tool_prm.blank_holder.enabled       = false;
   parameters::Contact contact_prm;
   contact_prm.penalty_factor      = 1;
   contact_prm.allowed_penetration = delta;
@@ -46,20 +47,24 @@ int main(int argc, char **argv)
   contact_prm.upper_bound         = 1e6;
   contact_prm.freeze              = false;
   contact_prm.damping             = 1e300; // no damping: test the estimate
-  contact_prm.adaptive_estimate   = "projection";
+
   const tools::ToolSet<3> tools(tool_prm, contact_prm, 1.);
 
   // projection (the published method) at iterates inside and short of the
   // final position: the estimate must not depend on where the iteration
   // stands; force (its dv -> 0 limit) at the converged iterate u_bar + delta.
-  for (const auto &[variant, u] : {std::pair{"projection", u_bar + 0.5},
-                                   std::pair{"projection", u_bar + 1e-6},
-                                   std::pair{"force", u_bar + delta}})
+  using parameters::AdaptiveEstimate;
+  for (const auto &[variant, u] :
+       {std::pair{AdaptiveEstimate::projection, u_bar + 0.5},
+        std::pair{AdaptiveEstimate::projection, u_bar + 1e-6},
+        std::pair{AdaptiveEstimate::force, u_bar + delta}})
     {
       contact_prm.adaptive_estimate = variant;
+      const std::string name =
+        variant == AdaptiveEstimate::force ? "force" : "projection";
       contact::ContactSet<3> set;
       set.nodes.resize(1);
-      set.nodes[0].dofs = {0, 1, 2};
+      set.nodes[0].dofs = {{0, 1, 2}};
       contact::ContactPair<3> pair;
       pair.node = 0, pair.tool = 0, pair.area = 1;
       pair.normal[0]     = -1; // the face pushes towards -x
@@ -73,13 +78,16 @@ int main(int argc, char **argv)
       r.compress(VectorOperation::insert);
 
       contact::AdaptivePenalty<3> estimator(contact_prm, false);
-      std::vector<double>         eps;
+      contact::ContactState       state;
+      state.reset(1, tools.size());
+      std::vector<double> eps;
       estimator.estimate(set,
                          tools,
                          contact::SystemView{&r, &K, &constraints, dt},
+                         state,
                          eps);
       const double eps_min = (q - k * (u_bar + delta)) / delta;
-      test::close(std::string(variant) + ": eps at u = " + std::to_string(u) +
+      test::close(name + ": eps at u = " + std::to_string(u) +
                     " / closed-form minimum",
                   eps[0] / eps_min,
                   1.,

@@ -35,15 +35,16 @@ namespace
         , dof_handler(tria)
         , mapping(degree)
         , material(material_parameters())
-        , assembler(material, mapping, degree)
+        , kinematics(false)
+        , assembler(material, kinematics, mapping, degree)
         , linear(linear_parameters(), {})
     {
       parameters::Geometry g;
-      g.blank_shape     = "rectangle";
-      g.blank_length    = L;
-      g.blank_width     = b;
-      g.thickness       = t;
-      g.symmetry_planes = "none";
+      g.model        = model::Model::full;
+      g.blank_shape  = parameters::BlankShape::rectangle;
+      g.blank_length = L;
+      g.blank_width  = b;
+      g.thickness    = t;
       parameters::Mesh m{degree, layers, refinements};
       geometry::create_blank_mesh(g, m, tria);
       dof_handler.distribute_dofs(fe);
@@ -86,20 +87,19 @@ namespace
     double assemble(const VectorType &v, const bool newton) override
     {
       ghost = v;
-      scale = assembler.assemble(dof_handler,
-                                 mapping,
-                                 homogeneous,
-                                 ghost,
-                                 history,
-                                 dt,
-                                 solver::ContactInput<3>(),
-                                 newton,
-                                 &matrix,
-                                 residual);
+      scale = assembler.assemble_body(dof_handler,
+                                      mapping,
+                                      homogeneous,
+                                      ghost,
+                                      history,
+                                      dt,
+                                      newton,
+                                      &matrix,
+                                      residual);
       return residual.l2_norm();
     }
     double force_scale() const override { return scale; }
-    double residual_dot(const VectorType &w) const override
+    double directional_derivative(const VectorType &w) const override
     {
       return residual * w;
     }
@@ -120,7 +120,7 @@ namespace
     }
     static parameters::LinearSolver linear_parameters()
     {
-      return {"direct", "MUMPS", "GMRES", 1e-10, 1000};
+      return parameters::LinearSolver(); // direct, MUMPS
     }
 
     // Ends x = -+L/2 rotate: v_x = -+omega (z - t/2); plane strain: v_y = 0
@@ -166,7 +166,8 @@ namespace
     MappingQ<3>                             mapping;
     IndexSet                                owned, relevant;
     AffineConstraints<double>               bc, homogeneous;
-    material::RigidViscoplastic<3>          material;
+    material::RigidViscoplastic             material;
+    model::Kinematics<3>                    kinematics;
     solver::Assembler<3>                    assembler;
     solver::HistoryStorage<3>               history;
     solver::MatrixType                      matrix;
@@ -181,7 +182,7 @@ int main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const double exact = 2. / std::sqrt(3.) * sigma0 * b * t * t / 4.;
   std::cout << "closed-form limit moment: " << exact << " N mm\n";
-  for (const auto [degree, layers] : {std::pair{2u, 2u}, std::pair{1u, 4u}})
+  for (const auto &[degree, layers] : {std::pair{2u, 2u}, std::pair{1u, 4u}})
     {
       Bending      strip(degree, layers, 2);
       const double M = strip.moment();

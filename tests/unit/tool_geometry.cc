@@ -140,5 +140,51 @@ int main()
   expect(plane, "above", Point<3>(100, 50, 0.2), 0.2, vec(0, 0, 1));
   expect(plane, "below, on the axis", Point<3>(0, 0, -0.1), -0.1, vec(0, 0, 1));
 
+  // Axisymmetric model: a round tool in 2-D is the r-z profile of the 3-D
+  // tool; distance, normal and lateral distance agree at (r, z) and
+  // (r, 0, z).
+  {
+    Planform<2> circle2;
+    circle2.kind   = Planform<2>::Kind::circle;
+    circle2.radius = 20;
+    Planform<3> circle3;
+    circle3.kind   = Planform<3>::Kind::circle;
+    circle3.radius = 20;
+    ProfileTool<2> punch2("punch", circle2, -1, +1, 1., 8., Tensor<1, 2>());
+    ProfileTool<3> punch3("punch", circle3, -1, +1, 1., 8., Tensor<1, 3>());
+    ProfileTool<2> die2("die", circle2, +1, -1, 0., 8., Tensor<1, 2>());
+    ProfileTool<3> die3("die", circle3, +1, -1, 0., 8., Tensor<1, 3>());
+    for (const double r : {0., 5., 12., 19., 20.5, 27., 31.})
+      for (const double z : {-3., -0.2, 0.5, 1.5, 6., 12.})
+        for (const auto &[tool2, tool3] :
+             {std::pair<const RigidTool<2> *, const RigidTool<3> *>{&punch2,
+                                                                    &punch3},
+              {&die2, &die3}})
+          {
+            Tensor<1, 2> n2;
+            Tensor<1, 3> n3;
+            const double d2 = tool2->signed_distance(Point<2>(r, z), n2);
+            const double d3 = tool3->signed_distance(Point<3>(r, 0, z), n3);
+            const std::string at = tool2->name() +
+                                   " profile at r=" + std::to_string(r) +
+                                   " z=" + std::to_string(z);
+            test::close(at + ": 2-D - 3-D distance", d2 - d3, 0, 1e-12);
+            test::close(at + ": normal",
+                        std::hypot(n2[0] - n3[0], n2[1] - n3[2]) +
+                          std::abs(n3[1]),
+                        0,
+                        1e-12);
+            test::close(at + ": lateral distance",
+                        tool2->lateral_distance(Point<2>(r, z)) -
+                          tool3->lateral_distance(Point<3>(r, 0, z)),
+                        0,
+                        1e-12);
+          }
+    test::close("die lateral distance over its face (r = 31)",
+                die2.lateral_distance(Point<2>(31, 0)),
+                31 - 20,
+                1e-12);
+  }
+
   return test::result();
 }

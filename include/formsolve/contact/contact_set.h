@@ -1,4 +1,5 @@
-// What the contact postprocessor finds: sheet surface nodes near tools.
+// What the contact search finds at one velocity iterate: sheet surface nodes
+// near each tool, with gaps, normals, areas and status.
 #pragma once
 
 #include <deal.II/base/point.h>
@@ -22,8 +23,9 @@ namespace formsolve
       std::array<dealii::types::global_dof_index, dim> dofs;
       Point<dim>                                       reference_position;
       /// Lumped area vector int phi_k n dA over the sheet surface (mm^2),
-      /// current configuration: its projection on a tool normal is the node's
-      /// share of the surface facing that tool.
+      /// current configuration (the full ring in axisymmetry): its
+      /// projection on a tool normal is the node's share of the surface
+      /// facing that tool.
       Tensor<1, dim> area_vector;
     };
 
@@ -38,10 +40,10 @@ namespace formsolve
       Tensor<1, dim> normal;        // outward tool normal at the closest point
       Tensor<1, dim> relative_velocity; // v - v_tool (mm/s)
       double         area;   // projected nodal area facing the tool (mm^2)
-      bool           active; // predicted_gap < 0
+      bool           active; // predicted_gap < shift
       bool           locked = false; // status frozen by the chatter guard
-      /// Augmented Lagrangian: multiplier as a gap shift s = lambda/eps (mm);
-      /// the normal force is eps <s - predicted_gap>. Zero otherwise.
+      /// Augmented Lagrangian: multiplier as a gap shift s = lambda/eps (mm),
+      /// read from the contact state; the normal force is eps <s - g_pred>.
       double shift = 0;
     };
 
@@ -51,17 +53,13 @@ namespace formsolve
       std::vector<ContactNode<dim>> nodes; // locally owned surface nodes
       std::vector<ContactPair<dim>> pairs; // pairs within the search distance
 
-      /// Status memory within a step: pair indices are stable within a step
-      /// (the pairs depend on the start-of-step geometry only).
+      /// Status memory within one solve: pair indices are stable within a
+      /// step (the pairs depend on the start-of-step geometry only).
       std::vector<unsigned int> flips;  // status changes per pair
       std::vector<int>          locked; // -1 free, else the locked status
       std::vector<bool>         previous_active;
 
-      /// Augmented Lagrangian gap shifts per (node, tool), index
-      /// node * n_tools + tool; persistent across steps, empty if unused.
-      std::vector<double> shifts;
-
-      void begin_step()
+      void begin_solve()
       {
         flips.clear();
         locked.clear();

@@ -1,10 +1,11 @@
-// The blank (sheet) mesh: a 2-D planform, generated or read from gmsh,
-// extruded into hexahedral layers through the thickness.
+// The blank (sheet) mesh. 3-D: a 2-D planform of the modelled part,
+// generated or read from gmsh, extruded into hexahedral layers through the
+// thickness. Axisymmetric: the r-z section [0, R] x [0, t].
 #pragma once
 
 #include <deal.II/distributed/tria.h>
 
-#include <formsolve/parameters/parameters.h>
+#include <formsolve/parameters/geometry.h>
 
 namespace formsolve
 {
@@ -14,14 +15,17 @@ namespace formsolve
     enum BoundaryId : dealii::types::boundary_id
     {
       free_surface = 0, // candidate for contact
-      symmetry_x   = 1, // plane x = 0
-      symmetry_y   = 2  // plane y = 0
+      symmetry_x   = 1, // plane x = 0 (3-D half and quarter models)
+      symmetry_y   = 2, // plane y = 0 (3-D quarter model)
+      axis         = 3  // r = 0 (axisymmetric model): v_r = 0
     };
 
-    /// Fills @p tria (empty) with the blank in 0 <= z <= thickness.
+    /// Fills @p tria (empty) with the blank in 0 <= z <= thickness; dim must
+    /// be model::space_dimension(geometry.model).
+    template <int dim>
     void
-    create_blank_mesh(const parameters::Geometry                      &geometry,
-                      const parameters::Mesh                          &mesh,
-                      dealii::parallel::distributed::Triangulation<3> &tria);
+    create_blank_mesh(const parameters::Geometry &geometry,
+                      const parameters::Mesh     &mesh,
+                      dealii::parallel::distributed::Triangulation<dim> &tria);
   } // namespace geometry
 } // namespace formsolve

@@ -1,4 +1,6 @@
-// The rigid-viscoplastic point law of the flow formulation.
+// The rigid-viscoplastic point law of the flow formulation, on the 3x3 rate
+// of deformation of every model (the kinematics supplies the hoop rate in
+// axisymmetry).
 #pragma once
 
 #include <deal.II/base/symmetric_tensor.h>
@@ -16,18 +18,16 @@ namespace formsolve
     /// The tangent d(deviatoric stress)/dD = 2 mu P_dev + beta D' (x) D' is
     /// returned by its two scalars, which lets the assembler form element
     /// matrices without fourth-order tensors.
-    template <int dim>
     struct PointResponse
     {
-      SymmetricTensor<2, dim> deviatoric_stress;
-      SymmetricTensor<2, dim> strain_rate_deviator; // D'
-      double                  equivalent_strain_rate;
-      double                  flow_stress;
-      double                  viscosity; // mu: s' = 2 mu D'
-      double                  beta;      // 0 for the secant tangent
+      SymmetricTensor<2, 3> deviatoric_stress;
+      SymmetricTensor<2, 3> strain_rate_deviator; // D'
+      double                equivalent_strain_rate;
+      double                flow_stress;
+      double                viscosity; // mu: s' = 2 mu D'
+      double                beta;      // 0 for the secant tangent
     };
 
-    template <int dim>
     class RigidViscoplastic
     {
     public:
@@ -35,10 +35,10 @@ namespace formsolve
 
       /// @p newton false gives the secant (direct-iteration) tangent 2 mu
       /// P_dev.
-      PointResponse<dim> evaluate(const SymmetricTensor<2, dim> &strain_rate,
-                                  const double                   strain_old,
-                                  const double                   dt,
-                                  const bool                     newton) const;
+      PointResponse evaluate(const SymmetricTensor<2, 3> &strain_rate,
+                             const double                 strain_old,
+                             const double                 dt,
+                             const bool                   newton) const;
 
       /// K_v in sigma_m = K_v tr(D) (MPa s).
       double bulk_viscosity() const { return bulk; }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <deal.II/base/quadrature_point_data.h>
+#include <deal.II/grid/tria.h>
 
 #include <vector>
 
@@ -33,5 +34,10 @@ namespace formsolve
         thickness_strain = v[4];
       }
     };
+
+    template <int dim>
+    using HistoryStorage = dealii::CellDataStorage<
+      typename dealii::Triangulation<dim>::cell_iterator,
+      QuadraturePointHistory>;
   } // namespace simulation
 } // namespace formsolve

@@ -1,6 +1,7 @@
 // Direct (Amesos MUMPS/KLU) or iterative (GMRES/CG + ML AMG) linear solves.
 #pragma once
 
+#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -33,18 +34,30 @@ namespace formsolve
                          dealii::TrilinosWrappers::MPI::Vector        &x,
                          const dealii::TrilinosWrappers::MPI::Vector  &b);
 
+      /// Solves A x = b with the matrix of the last solve(): the direct
+      /// solver reuses its factorisation (one more forward and back
+      /// substitution), the iterative one its preconditioner.
+      unsigned int solve_again(dealii::TrilinosWrappers::MPI::Vector       &x,
+                               const dealii::TrilinosWrappers::MPI::Vector &b);
+
       /// Lanczos estimate of cond(A) from the last solve ('Condition estimate
       /// iterations' CG steps without preconditioner), 0 if off.
       double condition_estimate() const { return last_condition; }
 
     private:
-      parameters::LinearSolver              prm;
-      std::vector<std::vector<bool>>        constant_modes;
-      std::unique_ptr<Epetra_LinearProblem> problem;
-      std::unique_ptr<Amesos_BaseSolver>    direct;
-      const void                           *factorised_matrix = nullptr;
-      unsigned long long                    factorised_nnz    = 0;
-      double                                last_condition    = 0;
+      parameters::LinearSolver                                   prm;
+      std::vector<std::vector<bool>>                             constant_modes;
+      std::unique_ptr<Epetra_LinearProblem>                      problem;
+      std::unique_ptr<Amesos_BaseSolver>                         direct;
+      std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
+      const dealii::TrilinosWrappers::SparseMatrix *last_matrix       = nullptr;
+      const void                                   *factorised_matrix = nullptr;
+      unsigned long long                            factorised_nnz    = 0;
+      double                                        last_condition    = 0;
+
+      unsigned int iterate(const dealii::TrilinosWrappers::SparseMatrix &A,
+                           dealii::TrilinosWrappers::MPI::Vector        &x,
+                           const dealii::TrilinosWrappers::MPI::Vector  &b);
 
       void estimate_condition(const dealii::TrilinosWrappers::SparseMatrix &A,
                               const dealii::TrilinosWrappers::MPI::Vector  &b);

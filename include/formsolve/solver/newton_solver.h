@@ -25,11 +25,24 @@ namespace formsolve
       virtual double assemble(const VectorType &v, const bool newton) = 0;
       /// A force scale for |r| from the last assembly (internal forces).
       virtual double force_scale() const = 0;
-      /// w . r with the last assembled residual r (the directional derivative
-      /// of the potential along w, used by the line search).
-      virtual double residual_dot(const VectorType &w) const = 0;
-      /// Solve K dv = -r with the last assembled K, r. Returns iterations.
+      /// Directional derivative of the potential along the last Newton
+      /// direction (dv and the corrections of any extra unknowns) with the
+      /// last assembled residual: dv . r + (extra terms). Used by the line
+      /// search.
+      virtual double directional_derivative(const VectorType &dv) const = 0;
+      /// Solve K dv = -r with the last assembled K, r (and the corrections
+      /// of any extra unknowns). Returns iterations.
       virtual unsigned int solve(VectorType &dv) = 0;
+      /// Extra unknowns (the blank holder under force control) follow the
+      /// line search: their trial values are the accepted ones plus
+      /// @p alpha times their last correction. Called before each trial
+      /// assembly.
+      virtual void set_step_length(const double /*alpha*/) {}
+      /// The last trial becomes the accepted iterate (extra unknowns).
+      virtual void accept_step() {}
+      /// Relative residual and correction of the extra equations (0 if none).
+      virtual double extra_residual() const { return 0; }
+      virtual double extra_correction() const { return 0; }
       /// Whether the contact set changed since the previous call.
       virtual bool contact_set_changed() = 0;
       /// Called at an accepted iterate (after its assembly): a system whose

@@ -54,13 +54,13 @@ namespace formsolve
       double         signed_distance(const Point<dim> &p,
                                      Tensor<1, dim>   &normal) const override;
       double         distance_to_radius(const Point<dim> &p) const override;
+      double         lateral_distance(const Point<dim> &p) const override;
       Tensor<1, dim> velocity() const override { return tool_velocity; }
+      void set_velocity(const Tensor<1, dim> &v) override { tool_velocity = v; }
+      Tensor<1, dim> displacement() const override { return offset; }
       void           advance(const double dt) override;
       double         travel() const override { return travelled; }
       std::string    name() const override { return tool_name; }
-
-      /// Stop moving (the tool keeps its place).
-      void stop() { tool_velocity = 0; }
 
     private:
       std::string    tool_name;

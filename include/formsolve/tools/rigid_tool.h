@@ -41,8 +41,22 @@ namespace formsolve
         return std::numeric_limits<double>::infinity();
       }
 
+      /// In-plane distance of @p p from the edge of the tool's face (mm):
+      /// positive on the face's side (over the die face, under the holder
+      /// or punch face), negative in the opening; infinite for flat tools.
+      virtual double lateral_distance(const Point<dim> & /*p*/) const
+      {
+        return std::numeric_limits<double>::infinity();
+      }
+
       /// Rigid translation velocity of the tool (mm/s).
       virtual Tensor<1, dim> velocity() const = 0;
+
+      /// Set the translation velocity (a tool under force control).
+      virtual void set_velocity(const Tensor<1, dim> &v) = 0;
+
+      /// Translation since the start (mm).
+      virtual Tensor<1, dim> displacement() const = 0;
 
       /// Translate the tool by velocity() * dt.
       virtual void advance(const double dt) = 0;

@@ -1,7 +1,8 @@
 // The tools of a run, built from the Tools subsection, and their motion.
 #pragma once
 
-#include <formsolve/parameters/parameters.h>
+#include <formsolve/parameters/contact.h>
+#include <formsolve/parameters/tools.h>
 #include <formsolve/tools/rigid_tool.h>
 
 #include <memory>
@@ -15,6 +16,8 @@ namespace formsolve
     class ToolSet
     {
     public:
+      static constexpr unsigned int none = static_cast<unsigned int>(-1);
+
       /// Builds the enabled tools around a sheet occupying 0 <= z <= thickness.
       ToolSet(const parameters::Tools   &p,
               const parameters::Contact &c,
@@ -39,6 +42,14 @@ namespace formsolve
       /// Column/field name of tool i: punch, die, blank_holder.
       const std::string &key(const unsigned int i) const { return keys[i]; }
       unsigned int       punch_index() const { return 0; }
+      /// Index of the die / blank holder, or none.
+      unsigned int die_index() const { return die; }
+      unsigned int holder_index() const { return holder; }
+
+      /// Velocity of tool @p i along z (mm/s), e.g. the blank holder under
+      /// force control.
+      void   set_axial_velocity(const unsigned int i, const double w);
+      double axial_velocity(const unsigned int i) const;
 
       void   advance(const double dt);
       double punch_travel() const { return tools[0]->travel(); }
@@ -50,6 +61,7 @@ namespace formsolve
       std::vector<double>                          friction, penalty, allowed;
       std::vector<std::string>                     keys;
       double                                       stroke, speed;
+      unsigned int                                 die = none, holder = none;
     };
   } // namespace tools
 } // namespace formsolve

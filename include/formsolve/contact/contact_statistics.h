@@ -1,0 +1,41 @@
+// Per-tool forces and penetration statistics of a contact set (all ranks).
+#pragma once
+
+#include <deal.II/base/mpi.h>
+
+#include <formsolve/contact/contact_set.h>
+#include <formsolve/tools/tool_set.h>
+
+#include <vector>
+
+namespace formsolve
+{
+  namespace contact
+  {
+    template <int dim>
+    struct ContactStatistics
+    {
+      /// Force of the sheet on each tool (N), modelled part.
+      std::vector<Tensor<1, dim>> tool_force;
+      std::vector<double>         tool_max_penetration; // mm, per tool, >= 0
+      double                      max_penetration  = 0; // mm, >= 0
+      double                      mean_penetration = 0; // mm, active pairs
+      unsigned int                n_active         = 0;
+      unsigned int n_over_allowed = 0; // active pairs deeper than delta
+      unsigned int n_locked       = 0; // pairs whose status was locked
+      double       min_factor     = 0; // N/mm, over active pairs
+      double       max_factor     = 0;
+    };
+
+    /// Forces from the contact law with factors @p epsilon (one per pair)
+    /// and friction regularisation @p v0, and penetration statistics of the
+    /// predicted (end-of-step) gaps.
+    template <int dim>
+    ContactStatistics<dim> statistics(const tools::ToolSet<dim> &tools,
+                                      const ContactSet<dim>     &set,
+                                      const std::vector<double> &epsilon,
+                                      const double               v0,
+                                      const double               dt,
+                                      const MPI_Comm             comm);
+  } // namespace contact
+} // namespace formsolve

@@ -1,0 +1,57 @@
+// The adaptive method (doc/theory.md, section 6; ../shared/method):
+// eps_k = n_k . (r_b + K_b dv)_k / delta_k ("projection"), where dv moves
+// every active node so that its predicted penetration is exactly delta and is
+// zero elsewhere, or its limit dv -> 0, eps_k = n_k . r_b,k / delta_k
+// ("force"); bounded relative to the node's tangent diagonal and damped to a
+// factor per estimate. With @p strict (adaptive-strict), a converged step
+// whose penetration exceeds delta anywhere is solved again with those nodes'
+// factors scaled by penetration/delta.
+#pragma once
+
+#include <formsolve/contact/penalty_strategy.h>
+
+namespace formsolve
+{
+  namespace contact
+  {
+    template <int dim>
+    class AdaptivePenalty : public PenaltyStrategy<dim>
+    {
+    public:
+      AdaptivePenalty(const parameters::Contact &p, const bool strict);
+
+      bool        needs_system() const override { return true; }
+      void        begin_solve() override { last_epsilon.clear(); }
+      void        estimate(const ContactSet<dim>     &set,
+                           const tools::ToolSet<dim> &tools,
+                           const SystemView          &system,
+                           ContactState              &state,
+                           std::vector<double>       &epsilon) override;
+      bool        finish_solve(const ContactSet<dim>     &set,
+                               const tools::ToolSet<dim> &tools,
+                               ContactState              &state,
+                               const MPI_Comm             comm) override;
+      std::string summary() const override;
+      std::string name() const override
+      {
+        return strict ? "adaptive-strict" : "adaptive";
+      }
+
+      /// Range of the last factors over the active pairs (N/mm), and the
+      /// largest eps_k dt / K_kk.
+      double       min_factor = 0, max_factor = 0, max_ratio = 0;
+      unsigned int n_active = 0;
+
+    private:
+      double lower, upper;
+      bool   freeze, strict;
+      bool   projection; // the published estimate with K_b dv
+      double damping;    // max change factor per estimate
+      double target;     // aim at this fraction of delta
+      /// Within one solve: the active set and factors of the last estimate
+      /// (factors are frozen once the active set repeats).
+      std::vector<bool>   last_active;
+      std::vector<double> last_epsilon;
+    };
+  } // namespace contact
+} // namespace formsolve

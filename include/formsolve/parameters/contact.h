@@ -1,0 +1,44 @@
+// Subsection "Contact": penalty strategy, friction law, contact search.
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    using dealii::ParameterHandler;
+
+    enum class AdaptiveEstimate
+    {
+      force,     // eps_k = n.r_b / delta
+      projection // eps_k = n.(r_b + K_b dv) / delta, the published form
+    };
+
+    struct Contact
+    {
+      /// A name registered in contact/penalty_strategy.h; parsed once, into
+      /// the strategy object, by contact::create_penalty_strategy.
+      std::string      penalty_strategy        = "adaptive-strict";
+      std::string      al_penalty              = "fixed"; // factors under Uzawa
+      double           penalty_factor          = 1e5;     // N/mm^3
+      double           allowed_penetration     = 1e-3;    // delta (mm)
+      double           lower_bound             = 1e-3;    // eps_k dt / K_kk
+      double           upper_bound             = 1e4;
+      bool             freeze                  = true;
+      AdaptiveEstimate adaptive_estimate       = AdaptiveEstimate::force;
+      double           damping                 = 10;
+      double           target_fraction         = 1;
+      unsigned int     max_status_flips        = 4;
+      unsigned int     max_strict_passes       = 5;
+      double           regularisation_velocity = 1e-3; // mm/s
+      double           search_distance         = 1;    // mm
+
+      static void declare(ParameterHandler &prm);
+      void        parse(ParameterHandler &prm);
+      void        validate() const;
+    };
+  } // namespace parameters
+} // namespace formsolve

@@ -1,0 +1,55 @@
+// Subsections "Geometry" (the model and the blank) and "Mesh".
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <formsolve/model/model.h>
+
+#include <string>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    using dealii::ParameterHandler;
+
+    enum class BlankShape
+    {
+      round,     // a disk (its section in axisymmetry)
+      rectangle, // length x width
+      gmsh       // planform of the modelled part read from Mesh file
+    };
+
+    /// Subsection "Geometry": which model, and the blank (sheet) before
+    /// forming.
+    struct Geometry
+    {
+      model::Model model          = model::Model::axisymmetric;
+      BlankShape   blank_shape    = BlankShape::round;
+      double       blank_diameter = 77;   // mm
+      double       blank_length   = 40;   // mm, full length along x
+      double       blank_width    = 40;   // mm, full width along y
+      double       thickness      = 0.78; // mm
+      std::string  mesh_file;             // gmsh .msh or .geo (2-D planform)
+
+      static void declare(ParameterHandler &prm);
+      void        parse(ParameterHandler &prm);
+      void        validate() const;
+
+      /// Factor from the modelled part to the full part (4 for a quarter).
+      double symmetry_factor() const { return model::symmetry_factor(model); }
+    };
+
+    /// Subsection "Mesh".
+    struct Mesh
+    {
+      unsigned int degree      = 1;
+      unsigned int layers      = 4;
+      unsigned int refinements = 4;
+
+      static void declare(ParameterHandler &prm);
+      void        parse(ParameterHandler &prm);
+      void        validate() const;
+    };
+  } // namespace parameters
+} // namespace formsolve

@@ -1,0 +1,27 @@
+// Subsection "Output".
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    using dealii::ParameterHandler;
+
+    struct Output
+    {
+      std::string  directory            = "results/cup-drawing";
+      unsigned int interval             = 5; // VTU every N steps (0: never)
+      bool         wall_time_in_history = true;
+      bool         revolved_copy        = false; // axisymmetric: 3-D VTU too
+      double       revolved_angle       = 270;   // degrees swept
+
+      static void declare(ParameterHandler &prm);
+      void        parse(ParameterHandler &prm);
+      void        validate() const;
+    };
+  } // namespace parameters
+} // namespace formsolve

@@ -1,0 +1,80 @@
+// Subsections "Time stepping" (with step control), "Nonlinear solver" and
+// "Linear solver".
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    using dealii::ParameterHandler;
+
+    enum class EndOfRun
+    {
+      stroke,         // the punch stroke is reached
+      holder_release, // ... or the blank rim has left the blank holder
+      draw_through    // ... or the blank lies wholly inside the die opening
+    };
+
+    struct TimeStepping
+    {
+      double       time_step         = 0.25; // s, nominal and largest
+      double       minimum_time_step = 1e-3; // s
+      double       cutback_factor    = 0.5;  // dt <- this * dt on failure
+      double       growth_factor     = 1.5;  // dt <- this * dt after easy steps
+      unsigned int easy_iterations   = 8;    // Newton its of an easy step
+      unsigned int max_cutbacks      = 8;    // per step
+      EndOfRun     end_of_run        = EndOfRun::stroke;
+
+      static void declare(ParameterHandler &prm);
+      void        parse(ParameterHandler &prm);
+      void        validate() const;
+    };
+
+    struct NonlinearSolver
+    {
+      unsigned int max_iterations        = 60;
+      double       residual_tolerance    = 1e-6;
+      double       correction_tolerance  = 1e-6;
+      unsigned int max_line_search_steps = 6;
+      unsigned int picard_iterations     = 0;
+      bool         picard_fallback       = true;
+      bool         log_iterations        = false;
+
+      static void declare(ParameterHandler &prm);
+      void        parse(ParameterHandler &prm);
+      void        validate() const;
+    };
+
+    enum class LinearSolverType
+    {
+      direct,
+      iterative
+    };
+    enum class DirectSolver
+    {
+      mumps,
+      klu
+    };
+    enum class IterativeSolver
+    {
+      gmres,
+      cg
+    };
+
+    struct LinearSolver
+    {
+      LinearSolverType type                 = LinearSolverType::direct;
+      DirectSolver     direct_solver        = DirectSolver::mumps;
+      IterativeSolver  iterative_solver     = IterativeSolver::gmres;
+      double           tolerance            = 1e-8;
+      unsigned int     max_iterations       = 2000;
+      unsigned int     condition_iterations = 0; // Lanczos estimate, 0: off
+
+      static void declare(ParameterHandler &prm);
+      void        parse(ParameterHandler &prm);
+      void        validate() const;
+    };
+  } // namespace parameters
+} // namespace formsolve

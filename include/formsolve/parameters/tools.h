@@ -1,0 +1,65 @@
+// Subsection "Tools": punch, die and blank holder; the punch motion and the
+// blank-holder control.
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    using dealii::ParameterHandler;
+
+    enum class ToolShape
+    {
+      round,             // surface of revolution about the z axis
+      rounded_rectangle, // for square cups (3-D models only)
+      flat               // an infinite plane
+    };
+
+    enum class HolderControl
+    {
+      gap,  // held at its initial position
+      force // moves so that its contact force equals Force
+    };
+
+    /// The entries every tool subsection (Punch, Die, Blank holder) has.
+    struct Tool
+    {
+      std::string name; // subsection name, also the history column prefix
+      bool        enabled              = true;
+      ToolShape   shape                = ToolShape::round;
+      double      diameter             = 40; // mm (round)
+      double      length               = 40; // mm (rounded rectangle, along x)
+      double      width                = 40; // mm (rounded rectangle, along y)
+      double      corner_radius        = 8;  // mm (rounded rectangle, in plane)
+      double      profile_radius       = 8;  // mm (fillet of the working edge)
+      double      gap                  = 0; // mm, initial distance to the sheet
+      double      friction_coefficient = 0.1;
+      double      penalty_factor       = 0; // N/mm^3; 0: Contact/Penalty factor
+      double      allowed_penetration  = 0; // mm; 0: Contact/Allowed penetr.
+
+      /// Declares the common entries inside the current subsection.
+      static void declare(ParameterHandler &prm, const Tool &defaults);
+      void        parse(ParameterHandler &prm);
+      void        validate() const;
+    };
+
+    struct Tools
+    {
+      Tool punch{"Punch"}, die{"Die"}, blank_holder{"Blank holder"};
+
+      double punch_stroke = 30; // mm, total punch travel (bound of the run)
+      double punch_speed  = 1;  // mm/s, in -z
+
+      HolderControl holder_control = HolderControl::force;
+      double        holder_force   = 2670; // N, full part
+
+      static void declare(ParameterHandler &prm);
+      void        parse(ParameterHandler &prm);
+      void        validate() const;
+    };
+  } // namespace parameters
+} // namespace formsolve

@@ -1,0 +1,34 @@
+// history.csv: one row per converged step, columns by name (documented in
+// doc/user-guide.md, section 5).
+#pragma once
+
+#include <formsolve/contact/contact_statistics.h>
+#include <formsolve/postprocess/statistics_table.h>
+#include <formsolve/simulation/state.h>
+#include <formsolve/solver/assembler.h>
+#include <formsolve/solver/step_solver.h>
+
+namespace formsolve
+{
+  namespace postprocess
+  {
+    template <int dim>
+    class HistoryWriter
+    {
+    public:
+      /// Creates <Output directory>/history.csv (rank 0) with the columns of
+      /// the tools of @p state.
+      explicit HistoryWriter(const simulation::State<dim> &state);
+
+      /// One row for the step just advanced. Forces are for the full part.
+      void write(const simulation::State<dim>          &state,
+                 const solver::StepReport              &report,
+                 const contact::ContactStatistics<dim> &stats,
+                 const solver::Assembler<dim>          &assembler,
+                 const double                           wall_time);
+
+    private:
+      StatisticsTable table;
+    };
+  } // namespace postprocess
+} // namespace formsolve

@@ -1,0 +1,59 @@
+// VTU/PVTU files on the deformed mesh and the PVD time series; for the
+// axisymmetric model optionally also the section revolved about the z axis.
+#pragma once
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <formsolve/parameters/output.h>
+#include <formsolve/simulation/quadrature_history.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace formsolve
+{
+  namespace postprocess
+  {
+    using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+
+    /// A nodal scalar stored as component @p component of a ghosted vector
+    /// on the velocity DoFHandler.
+    struct NodalScalar
+    {
+      std::string       name;
+      const VectorType *values    = nullptr;
+      unsigned int      component = 0;
+    };
+
+    template <int dim>
+    struct OutputFields
+    {
+      const VectorType                      *velocity     = nullptr; // ghosted
+      const VectorType                      *displacement = nullptr; // ghosted
+      std::vector<NodalScalar>               nodal;
+      const simulation::HistoryStorage<dim> *history = nullptr;
+    };
+
+    template <int dim>
+    class VtuWriter
+    {
+    public:
+      explicit VtuWriter(const parameters::Output &p);
+
+      /// Writes solution_<step>.vtu/.pvtu and rewrites solution.pvd (and the
+      /// revolved copy, if asked for and dim = 2).
+      void write(const unsigned int             step,
+                 const double                   time,
+                 const dealii::DoFHandler<dim> &dof_handler,
+                 const dealii::Mapping<dim>    &mapping,
+                 const OutputFields<dim>       &fields);
+
+    private:
+      parameters::Output                          prm;
+      std::vector<std::pair<double, std::string>> records, revolved_records;
+    };
+  } // namespace postprocess
+} // namespace formsolve

@@ -1,0 +1,31 @@
+// Adapts the mesh of a State by the refinement criteria and carries the
+// whole state over: velocity, displacement, quadrature history, contact
+// nodes and areas.
+#pragma once
+
+#include <formsolve/refinement/mesh_refinement.h>
+#include <formsolve/simulation/state.h>
+#include <formsolve/solver/assembler.h>
+
+namespace formsolve
+{
+  namespace refinement
+  {
+    /// One adaptation, for refinement.csv.
+    struct AdaptReport
+    {
+      bool         changed      = false;
+      double       cells_before = 0, cells_after = 0, dofs = 0;
+      unsigned int refine = 0, coarsen = 0; // cells flagged by the criteria
+      double       volume_before = 0, volume_after = 0;
+      double       strain_before = 0, strain_after = 0; // int eps dV
+    };
+
+    /// Refine and coarsen @p state's mesh by @p criteria. The contact state
+    /// starts afresh on the new contact nodes (doc/theory.md, section 7a).
+    template <int dim>
+    AdaptReport adapt_mesh(simulation::State<dim>        &state,
+                           const RefinementCriteria<dim> &criteria,
+                           const solver::Assembler<dim>  &assembler);
+  } // namespace refinement
+} // namespace formsolve

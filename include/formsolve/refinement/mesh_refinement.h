@@ -1,0 +1,66 @@
+// Where the mesh is refined: bands around the tools' profile radii (where the
+// sheet bends) and, optionally, a Kelly indicator on the velocity.
+#pragma once
+
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <formsolve/parameters/parameters.h>
+#include <formsolve/simulation/quadrature_history.h>
+#include <formsolve/tools/tool_set.h>
+
+#include <vector>
+
+namespace formsolve
+{
+  namespace refinement
+  {
+    /// Cells flagged by one call of RefinementCriteria::mark (all ranks).
+    struct RefinementFlags
+    {
+      unsigned int refine  = 0;
+      unsigned int coarsen = 0;
+    };
+
+    /// Quadrature history on every parent whose children are all flagged for
+    /// coarsening and owned here: at each parent point the mean of the child
+    /// containing it, which keeps the integral over the family (exactly for
+    /// one Gauss point per child, Q1). deal.II's
+    /// ContinuousQuadratureDataTransfer does not coarsen by itself: it packs
+    /// the parent's data, which this provides.
+    template <int dim>
+    void store_parent_history(const dealii::Triangulation<dim> &tria,
+                              const dealii::Quadrature<dim>    &quadrature,
+                              simulation::HistoryStorage<dim>  &history);
+
+    template <int dim>
+    class RefinementCriteria
+    {
+    public:
+      RefinementCriteria(const parameters::MeshRefinement &p,
+                         const tools::ToolSet<dim>        &tools);
+
+      /// Sets refinement and coarsening flags on the locally owned cells of
+      /// @p dof_handler's triangulation, positions from @p mapping (current
+      /// configuration). Collective.
+      RefinementFlags
+      mark(const dealii::DoFHandler<dim>               &dof_handler,
+           const dealii::Mapping<dim>                  &mapping,
+           const dealii::TrilinosWrappers::MPI::Vector &velocity,
+           const tools::ToolSet<dim>                   &tools) const;
+
+      /// Level wanted by the radius bands at @p x (current position) for a
+      /// cell of size @p diameter, with the band scaled by @p band_factor.
+      unsigned int band_level(const dealii::Point<dim>  &x,
+                              const double               diameter,
+                              const tools::ToolSet<dim> &tools,
+                              const double               band_factor) const;
+
+    private:
+      parameters::MeshRefinement prm;
+      std::vector<unsigned int>  tool_level; // per tool of the ToolSet
+    };
+  } // namespace refinement
+} // namespace formsolve

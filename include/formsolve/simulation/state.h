@@ -1,0 +1,105 @@
+// What a step changes, in one object: mesh, DoFs, velocity, displacement,
+// quadrature history, tool positions, contact nodes and contact state, the
+// blank-holder control and the time. Refinement transfers it as one; step
+// control saves and restores the part a failed step may have touched.
+#pragma once
+
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/fe/mapping_q_eulerian.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <formsolve/contact/contact_set.h>
+#include <formsolve/contact/contact_state.h>
+#include <formsolve/model/kinematics.h>
+#include <formsolve/parameters/parameters.h>
+#include <formsolve/simulation/quadrature_history.h>
+#include <formsolve/tools/tool_set.h>
+
+#include <memory>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    template <int dim>
+    class Assembler;
+  }
+
+  namespace simulation
+  {
+    using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+
+    /// The blank holder's control: force control until the blank has left
+    /// it.
+    struct HolderState
+    {
+      bool   force_control  = false; // Control = force and not released
+      bool   released       = false;
+      double velocity       = 0;  // axial velocity of the last step (mm/s)
+      double target         = 0;  // set force on the modelled part (N)
+      double release_travel = -1; // punch travel at release (mm)
+    };
+
+    /// What a failed step may have changed, for step control.
+    struct StepSnapshot
+    {
+      VectorType            velocity;
+      contact::ContactState contact_state;
+      double                holder_velocity;
+    };
+
+    template <int dim>
+    struct State
+    {
+      State(const parameters::Run &run, const MPI_Comm comm);
+
+      /// The blank mesh of Geometry and Mesh, then setup_dofs().
+      void create_mesh(const solver::Assembler<dim> &assembler);
+      /// DoFs, constraints (hanging nodes, symmetry planes, axis), vectors,
+      /// mapping, history entries (@p assembler's rule), contact nodes and a
+      /// fresh contact state for the current mesh (after creation or
+      /// adaptation).
+      void setup_dofs(const solver::Assembler<dim> &assembler);
+      /// Contact nodal areas in the current configuration.
+      void update_contact_areas();
+
+      /// After a converged step of @p dt: history, geometry, tools, time.
+      void advance(const double dt, const solver::Assembler<dim> &assembler);
+
+      StepSnapshot snapshot() const;
+      void         restore(const StepSnapshot &s);
+
+      /// Largest lateral distance (mm) of any sheet surface node from the
+      /// edge of tool @p t's face (positive: on the face's side), all ranks.
+      double max_lateral_distance(const unsigned int t) const;
+
+      const parameters::Run &prm;
+      MPI_Comm               comm;
+      model::Kinematics<dim> kinematics;
+
+      dealii::parallel::distributed::Triangulation<dim> tria;
+      dealii::FESystem<dim>                             fe;
+      dealii::DoFHandler<dim>                           dof_handler;
+      dealii::IndexSet                                  owned, relevant;
+      dealii::AffineConstraints<double>                 constraints;
+      dealii::MappingQ<dim>                             reference_mapping;
+      std::unique_ptr<dealii::MappingQEulerian<dim, VectorType>> mapping;
+
+      VectorType          velocity, displacement;             // owned
+      VectorType          velocity_ghost, displacement_ghost; // ghosted
+      HistoryStorage<dim> history;
+
+      tools::ToolSet<dim>      tools;
+      contact::ContactSet<dim> contact_set; // nodes; pairs of the last iterate
+      contact::ContactState    contact_state;
+      HolderState              holder;
+
+      double       time = 0;
+      unsigned int step = 0;
+    };
+  } // namespace simulation
+} // namespace formsolve

@@ -1,0 +1,82 @@
+// The time loop: set-up and scene checks, then per step: adapt the mesh when
+// due, check the process events (blank-holder release, draw-through), solve
+// the step, advance the state, write history, progress and output.
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <formsolve/material/rigid_viscoplastic.h>
+#include <formsolve/postprocess/contact_fields.h>
+#include <formsolve/postprocess/statistics_table.h>
+#include <formsolve/postprocess/vtu_writer.h>
+#include <formsolve/refinement/mesh_refinement.h>
+#include <formsolve/simulation/state.h>
+#include <formsolve/solver/assembler.h>
+#include <formsolve/solver/step_solver.h>
+
+#include <memory>
+#include <string>
+
+namespace formsolve
+{
+  namespace simulation
+  {
+    /// Summary of a finished run (for tests and benchmarks).
+    struct RunSummary
+    {
+      unsigned int steps             = 0;
+      unsigned int newton_iterations = 0;
+      unsigned int linear_iterations = 0;
+      unsigned int cutbacks          = 0;
+      double       wall_time         = 0;
+      double       newton_wall_time  = 0; // spent inside Newton iterations
+      double       n_dofs            = 0; // largest over the run
+      double       dof_steps         = 0; // sum over steps of the DoFs
+      double       peak_memory_kb    = 0; // peak resident set, all ranks
+      std::string  end_reason;
+    };
+
+    template <int dim>
+    class TimeLoop
+    {
+    public:
+      TimeLoop(const parameters::Run &run, const dealii::ParameterHandler &prm);
+
+      /// Set up, check the scene, create the output folder, run all steps.
+      /// Throws with a clear message when a step fails at the minimum time
+      /// step (after writing the output of the last converged step).
+      RunSummary run();
+
+      /// Build the mesh and check the initial scene, then stop (--validate).
+      void validate_scene();
+
+    private:
+      void check_initial_scene();
+      void prepare_output_directory();
+      /// Adapt the mesh; logs a row of refinement.csv. Whether it changed.
+      bool adapt();
+      void write_output();
+      /// Holder release and draw-through; the reason to end the run, or "".
+      std::string check_events();
+      void        write_summary(RunSummary &summary) const;
+
+      const parameters::Run          &prm;
+      const dealii::ParameterHandler &parameter_handler;
+      MPI_Comm                        comm;
+      dealii::ConditionalOStream      pcout;
+      dealii::TimerOutput             timer;
+
+      material::RigidViscoplastic                   material;
+      State<dim>                                    state;
+      solver::Assembler<dim>                        assembler;
+      solver::StepSolver<dim>                       step_solver;
+      refinement::RefinementCriteria<dim>           criteria;
+      std::unique_ptr<postprocess::StatisticsTable> refinement_log;
+      std::unique_ptr<postprocess::VtuWriter<dim>>  writer;
+      postprocess::ContactFields<dim>               contact_fields;
+      int                                           last_output_step = -1;
+    };
+  } // namespace simulation
+} // namespace formsolve

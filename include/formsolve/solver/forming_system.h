@@ -1,0 +1,95 @@
+// The discrete problem of one step, as Newton sees it: at every iterate the
+// contact search, the penalty strategy, the body and contact assembly, and
+// the linear solve (bordered with the blank-holder equation under force
+// control). Data flows one way: search -> strategy -> assembly -> solve.
+#pragma once
+
+#include <deal.II/base/timer.h>
+
+#include <formsolve/contact/contact_search.h>
+#include <formsolve/contact/penalty_strategy.h>
+#include <formsolve/simulation/state.h>
+#include <formsolve/solver/assembler.h>
+#include <formsolve/solver/holder_coupling.h>
+#include <formsolve/solver/linear_solver.h>
+#include <formsolve/solver/newton_solver.h>
+
+#include <memory>
+#include <vector>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    template <int dim>
+    class FormingSystem : public NonlinearSystem
+    {
+    public:
+      FormingSystem(const parameters::Run         &prm,
+                    simulation::State<dim>        &state,
+                    const Assembler<dim>          &assembler,
+                    contact::PenaltyStrategy<dim> &strategy,
+                    dealii::TimerOutput           &timer);
+
+      /// Matrices, vectors and linear solver for the state's current mesh.
+      void reinit();
+      /// A step of @p dt begins (statistics of the step are reset).
+      void begin_step(const double dt);
+      /// A Newton solve of the step begins, from the state's velocity and
+      /// holder velocity.
+      void begin_solve();
+
+      /// Factors of the pairs of the last assembly (one per pair).
+      const std::vector<double> &penalty_factors() const { return epsilon; }
+      /// The holder's axial velocity of the accepted iterate (mm/s).
+      double       holder_velocity() const { return w_accepted; }
+      unsigned int max_linear_iterations() const { return step_max_linear; }
+      double       condition_estimate() const { return step_condition; }
+
+      // NonlinearSystem
+      double       assemble(const VectorType &v, const bool newton) override;
+      double       force_scale() const override { return f_scale; }
+      double       directional_derivative(const VectorType &dv) const override;
+      unsigned int solve(VectorType &dv) override;
+      bool         contact_set_changed() override;
+      double       update_penalty() override;
+      std::string  iteration_info() const override;
+      void         set_step_length(const double alpha) override;
+      void         accept_step() override { w_accepted = w_trial; }
+      double       extra_residual() const override;
+      double       extra_correction() const override;
+
+    private:
+      /// Factors from the body system (r_b, K_b) of the current pairs.
+      void estimate_penalty(const VectorType &r_b, const MatrixType &K_b);
+      /// Contact forces and stiffness with the current factors added to the
+      /// matrix and residual; holder coupling terms.
+      void add_contact_terms();
+      bool holder_controlled() const { return state.holder.force_control; }
+
+      const parameters::Run         &prm;
+      simulation::State<dim>        &state;
+      const Assembler<dim>          &assembler;
+      contact::PenaltyStrategy<dim> &strategy;
+      dealii::TimerOutput           &timer;
+      contact::ContactSearch<dim>    search;
+
+      MatrixType matrix;
+      /// Body system (no contact) of the last assembly, kept for penalty
+      /// estimates at accepted iterates.
+      MatrixType                    body_matrix;
+      VectorType                    residual, body_residual;
+      std::vector<double>           epsilon;
+      std::vector<bool>             last_active;
+      std::unique_ptr<LinearSolver> linear_solver;
+      HolderCoupling<dim>           holder;
+      double w_accepted = 0, w_trial = 0, dw = 0; // holder velocity (mm/s)
+
+      double       dt              = 0;
+      double       f_scale         = 0;
+      bool         last_newton     = true; // tangent type of the last assembly
+      unsigned int step_max_linear = 0;
+      double       step_condition  = 0;
+    };
+  } // namespace solver
+} // namespace formsolve

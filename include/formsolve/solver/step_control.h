@@ -1,0 +1,34 @@
+// Time-step control: a failed step is retried with a smaller time step; the
+// time step grows back after easy steps (Time stepping subsection).
+#pragma once
+
+#include <formsolve/parameters/solvers.h>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    class StepControl
+    {
+    public:
+      explicit StepControl(const parameters::TimeStepping &p);
+
+      /// The time step to try next (s).
+      double time_step() const { return dt; }
+      /// A new step begins: its cutback count restarts.
+      void begin_step() { step_cutbacks = 0; }
+      /// The last try failed: cut the time step. Returns whether another try
+      /// is allowed (at or above the minimum, within Max cutbacks).
+      bool reject();
+      /// The step converged in @p iterations Newton iterations: grow the
+      /// time step after an easy step without cutbacks.
+      void         accept(const unsigned int iterations);
+      unsigned int cutbacks() const { return step_cutbacks; }
+
+    private:
+      parameters::TimeStepping prm;
+      double                   dt;
+      unsigned int             step_cutbacks = 0;
+    };
+  } // namespace solver
+} // namespace formsolve

@@ -1,0 +1,187 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <formsolve/contact/strategies/adaptive.h>
+#include <formsolve/model/dimensions.h>
+
+#include <algorithm>
+#include <limits>
+#include <sstream>
+
+namespace formsolve
+{
+  namespace contact
+  {
+    using namespace dealii;
+
+    template <int dim>
+    AdaptivePenalty<dim>::AdaptivePenalty(const parameters::Contact &p,
+                                          const bool                 strict)
+        : lower(p.lower_bound)
+        , upper(p.upper_bound)
+        , freeze(p.freeze)
+        , strict(strict)
+        , projection(p.adaptive_estimate ==
+                     parameters::AdaptiveEstimate::projection)
+        , damping(p.damping)
+        , target(p.target_fraction)
+    {}
+
+    template <int dim>
+    void AdaptivePenalty<dim>::estimate(const ContactSet<dim>     &set,
+                                        const tools::ToolSet<dim> &tools,
+                                        const SystemView          &system,
+                                        ContactState              &state,
+                                        std::vector<double>       &epsilon)
+    {
+      Assert(system.residual != nullptr && system.matrix != nullptr,
+             ExcInternalError());
+      Assert(state.size() == set.nodes.size() * tools.size(),
+             ExcInternalError());
+      const unsigned int n = set.pairs.size();
+      std::vector<bool>  active(n);
+      for (unsigned int k = 0; k < n; ++k)
+        active[k] = set.pairs[k].active;
+
+      // Freeze only when the active set repeats on every rank: a decision
+      // per rank would make the factors depend on the partition.
+      const MPI_Comm comm = system.residual->get_mpi_communicator();
+      const bool     reuse =
+        Utilities::MPI::min(int(freeze && active == last_active &&
+                                last_epsilon.size() == n),
+                            comm) != 0;
+
+      // dv: at active nodes the velocity change that leaves exactly delta of
+      // penetration at the end of the step, zero elsewhere (u' of the method).
+      const double                  dt = system.dt;
+      TrilinosWrappers::MPI::Vector dv(*system.residual), w(*system.residual);
+      dv = 0;
+      for (unsigned int k = 0; k < n; ++k)
+        if (active[k])
+          {
+            const auto  &pair  = set.pairs[k];
+            const double delta = target * tools.allowed_penetration(pair.tool);
+            const double move  = (-delta - pair.predicted_gap) / dt;
+            for (unsigned int a = 0; a < dim; ++a)
+              dv[set.nodes[pair.node].dofs[a]] += move * pair.normal[a];
+          }
+      dv.compress(VectorOperation::add);
+      system.constraints->set_zero(dv);
+      // projection: the method as published, F = n.(r_b + K_b dv); force: its
+      // limit dv -> 0, F = n.r_b, the force the node carries now.
+      if (projection)
+        system.matrix->vmult(w, dv);
+      else
+        w = 0;
+      w += *system.residual;
+      system.constraints->set_zero(w);
+
+      epsilon.resize(n);
+      min_factor = std::numeric_limits<double>::max();
+      max_factor = 0;
+      max_ratio  = 0;
+      n_active   = 0;
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          const auto &pair  = set.pairs[k];
+          const auto &dofs  = set.nodes[pair.node].dofs;
+          double      force = 0, K_nn = 0;
+          for (unsigned int a = 0; a < dim; ++a)
+            {
+              force += pair.normal[a] * w[dofs[a]];
+              K_nn += pair.normal[a] * pair.normal[a] *
+                      system.matrix->diag_element(dofs[a]);
+            }
+          // Stiffness in displacement units (N/mm): K_b carries 1/dt.
+          const double stiffness = std::max(K_nn, 0.) / dt;
+          double       eps =
+            std::clamp(force / (target * tools.allowed_penetration(pair.tool)),
+                       lower * stiffness,
+                       upper * stiffness);
+          // Far from convergence the estimate can jump by orders of magnitude
+          // between iterations; let it change by at most a factor 'damping'
+          // per estimate, starting from the fixed penalty of the tool.
+          ContactRecord &record = state(pair.node, pair.tool);
+          double        &last   = record.factor;
+          if (last <= 0)
+            last = tools.penalty_factor(pair.tool) * pair.area;
+          if (last > 0)
+            eps = std::clamp(eps, last / damping, last * damping);
+          if (!reuse)
+            last = eps;
+          epsilon[k] = reuse ? last_epsilon[k] : eps * record.scale;
+          if (active[k])
+            {
+              ++n_active;
+              min_factor = std::min(min_factor, epsilon[k]);
+              max_factor = std::max(max_factor, epsilon[k]);
+              if (stiffness > 0)
+                max_ratio = std::max(max_ratio, epsilon[k] / stiffness);
+            }
+        }
+      min_factor = Utilities::MPI::min(min_factor, comm);
+      max_factor = Utilities::MPI::max(max_factor, comm);
+      max_ratio  = Utilities::MPI::max(max_ratio, comm);
+      n_active   = Utilities::MPI::sum(n_active, comm);
+      if (n_active == 0)
+        min_factor = 0;
+      last_active  = active;
+      last_epsilon = epsilon;
+    }
+
+    template <int dim>
+    bool AdaptivePenalty<dim>::finish_solve(const ContactSet<dim>     &set,
+                                            const tools::ToolSet<dim> &tools,
+                                            ContactState              &state,
+                                            const MPI_Comm             comm)
+    {
+      if (!strict)
+        return false;
+      int again = 0;
+      for (const auto &pair : set.pairs)
+        {
+          const double delta = tools.allowed_penetration(pair.tool);
+          const double depth = -pair.predicted_gap;
+          if (pair.active && depth > delta)
+            {
+              // 10 % beyond the proportional correction: the body's own
+              // compliance makes the penetration fall less than 1/eps.
+              state(pair.node, pair.tool).scale *= 1.1 * depth / delta;
+              again = 1;
+            }
+        }
+      return Utilities::MPI::max(again, comm) != 0;
+    }
+
+    template <int dim>
+    std::string AdaptivePenalty<dim>::summary() const
+    {
+      std::ostringstream s;
+      s << "  eps=[" << min_factor << ", " << max_factor
+        << "] N/mm  max eps*dt/K_kk=" << max_ratio << "  active=" << n_active;
+      return s.str();
+    }
+
+#define INSTANTIATE(dim) template class AdaptivePenalty<dim>;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+
+    namespace
+    {
+      template <bool strict>
+      bool register_adaptive()
+      {
+        return register_penalty_strategy(
+          strict ? "adaptive-strict" : "adaptive",
+          [](const parameters::Contact &p) {
+            return std::make_unique<AdaptivePenalty<2>>(p, strict);
+          },
+          [](const parameters::Contact &p) {
+            return std::make_unique<AdaptivePenalty<3>>(p, strict);
+          });
+      }
+      [[maybe_unused]] const bool registered = register_adaptive<false>();
+      [[maybe_unused]] const bool registered_strict = register_adaptive<true>();
+    } // namespace
+  }   // namespace contact
+} // namespace formsolve

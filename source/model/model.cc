@@ -1,0 +1,64 @@
+#include <deal.II/base/exceptions.h>
+
+#include <formsolve/model/model.h>
+
+namespace formsolve
+{
+  namespace model
+  {
+    std::string model_names()
+    {
+      return "axisymmetric|half|quarter|full";
+    }
+
+    Model parse_model(const std::string &n)
+    {
+      if (n == "axisymmetric")
+        return Model::axisymmetric;
+      if (n == "half")
+        return Model::half;
+      if (n == "quarter")
+        return Model::quarter;
+      AssertThrow(n == "full",
+                  dealii::ExcMessage("Parameter Geometry/Model: '" + n +
+                                     "' is not one of " + model_names()));
+      return Model::full;
+    }
+
+    std::string name(const Model m)
+    {
+      switch (m)
+        {
+          case Model::axisymmetric:
+            return "axisymmetric";
+          case Model::half:
+            return "half";
+          case Model::quarter:
+            return "quarter";
+          case Model::full:
+            return "full";
+        }
+      return "";
+    }
+
+    unsigned int space_dimension(const Model m)
+    {
+      return m == Model::axisymmetric ? 2 : 3;
+    }
+
+    double symmetry_factor(const Model m)
+    {
+      return m == Model::quarter ? 4. : m == Model::half ? 2. : 1.;
+    }
+
+    bool symmetric_in_x(const Model m)
+    {
+      return m == Model::half || m == Model::quarter;
+    }
+
+    bool symmetric_in_y(const Model m)
+    {
+      return m == Model::quarter;
+    }
+  } // namespace model
+} // namespace formsolve

@@ -1,0 +1,131 @@
+#include <formsolve/parameters/geometry.h>
+#include <formsolve/parameters/require.h>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    using namespace dealii::Patterns;
+
+    void Geometry::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      prm.declare_entry(
+        "Model",
+        "axisymmetric",
+        Selection(model::model_names()),
+        "Which part of the scene is modelled. axisymmetric: the r-z section "
+        "of a round blank under round tools (2-D, the z axis is the axis of "
+        "revolution; the cheapest faithful model of a cylindrical cup); "
+        "quarter: x >= 0, y >= 0 with symmetry planes x = 0 and y = 0; half: "
+        "x >= 0 with the symmetry plane x = 0; full: the whole sheet. Forces "
+        "are always reported for the full part.");
+      prm.declare_entry(
+        "Blank shape",
+        "round",
+        Selection("round|rectangle|gmsh"),
+        "Planform of the full blank: round (Blank diameter) or rectangle "
+        "(Blank length x Blank width), of which the Model takes its part; "
+        "gmsh reads the planform of the modelled part from 'Mesh file' (3-D "
+        "models only). The sheet occupies 0 <= z <= Thickness.");
+      prm.declare_entry("Blank diameter",
+                        "77",
+                        Double(0),
+                        "Diameter d0 of a round blank (mm).");
+      prm.declare_entry("Blank length",
+                        "40",
+                        Double(0),
+                        "Full length of a rectangular blank along x (mm).");
+      prm.declare_entry("Blank width",
+                        "40",
+                        Double(0),
+                        "Full width of a rectangular blank along y (mm).");
+      prm.declare_entry("Thickness",
+                        "0.78",
+                        Double(),
+                        "Initial sheet thickness t0 (mm).");
+      prm.declare_entry(
+        "Mesh file",
+        "",
+        Anything(),
+        "For 'gmsh': a 2-D quadrilateral planform mesh (.msh) or a gmsh "
+        "geometry (.geo, meshed on reading by gmsh into quadrilaterals) of "
+        "the modelled part (quarter: x >= 0, y >= 0; half: x >= 0); it is "
+        "extruded through the thickness. Relative paths are taken from the "
+        "working directory.");
+      prm.leave_subsection();
+    }
+
+    void Geometry::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      model            = model::parse_model(prm.get("Model"));
+      const auto shape = prm.get("Blank shape");
+      blank_shape      = shape == "round"       ? BlankShape::round
+                         : shape == "rectangle" ? BlankShape::rectangle
+                                                : BlankShape::gmsh;
+      blank_diameter   = prm.get_double("Blank diameter");
+      blank_length     = prm.get_double("Blank length");
+      blank_width      = prm.get_double("Blank width");
+      thickness        = prm.get_double("Thickness");
+      mesh_file        = prm.get("Mesh file");
+      prm.leave_subsection();
+    }
+
+    void Geometry::validate() const
+    {
+      require_positive(thickness, "Geometry/Thickness", "mm");
+      if (blank_shape == BlankShape::round)
+        require_positive(blank_diameter, "Geometry/Blank diameter", "mm");
+      if (blank_shape == BlankShape::rectangle)
+        {
+          require_positive(blank_length, "Geometry/Blank length", "mm");
+          require_positive(blank_width, "Geometry/Blank width", "mm");
+        }
+      if (blank_shape == BlankShape::gmsh)
+        require(!mesh_file.empty(),
+                "Geometry/Mesh file",
+                "must name a .msh or .geo file when 'Blank shape' is gmsh");
+      if (model == model::Model::axisymmetric)
+        require(blank_shape == BlankShape::round,
+                "Geometry/Blank shape",
+                "must be round for Model = axisymmetric");
+    }
+
+    void Mesh::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh");
+      prm.declare_entry(
+        "Element degree",
+        "1",
+        Integer(1, 2),
+        "Polynomial degree of the FE_Q velocity elements (1 or 2).");
+      prm.declare_entry(
+        "Layers through thickness",
+        "4",
+        Integer(1, 64),
+        "Element layers through the sheet thickness. Bending needs at least "
+        "4 layers of degree 1 or 2 layers of degree 2.");
+      prm.declare_entry(
+        "Planform refinements",
+        "4",
+        Integer(0, 12),
+        "In-plane resolution. 3-D: global refinements of the coarse planform "
+        "before it is extruded (each halves the in-plane element size). "
+        "Axisymmetric: the blank radius is divided into 2^(this + 1) equal "
+        "elements (the element size of the quarter model's radius).");
+      prm.leave_subsection();
+    }
+
+    void Mesh::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh");
+      degree      = prm.get_integer("Element degree");
+      layers      = prm.get_integer("Layers through thickness");
+      refinements = prm.get_integer("Planform refinements");
+      prm.leave_subsection();
+    }
+
+    void Mesh::validate() const {}
+  } // namespace parameters
+} // namespace formsolve

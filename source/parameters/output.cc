@@ -1,0 +1,63 @@
+#include <formsolve/parameters/output.h>
+#include <formsolve/parameters/require.h>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    using namespace dealii::Patterns;
+
+    void Output::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry(
+        "Output directory",
+        "results/cup-drawing",
+        Anything(),
+        "Folder for parameters.prm, history.csv, run-summary.txt and the "
+        "VTU/PVTU/PVD files; created if missing.");
+      prm.declare_entry(
+        "Output interval",
+        "5",
+        Integer(0),
+        "Write VTU every this many steps (and the last step); 0: never.");
+      prm.declare_entry(
+        "Wall time in history",
+        "true",
+        Bool(),
+        "Write measured wall times into history.csv (false gives "
+        "reproducible files, e.g. for regression tests).");
+      prm.declare_entry(
+        "Revolved copy",
+        "false",
+        Bool(),
+        "Axisymmetric model: with every VTU of the r-z section also write "
+        "the section revolved about the z axis as a 3-D mesh "
+        "(revolved_<step>.pvtu, revolved.pvd), for pictures of the part.");
+      prm.declare_entry("Revolved angle",
+                        "270",
+                        Double(1, 360),
+                        "Angle the revolved copy sweeps (degrees): 270 leaves "
+                        "a quarter open to show the section.");
+      prm.leave_subsection();
+    }
+
+    void Output::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      directory            = prm.get("Output directory");
+      interval             = prm.get_integer("Output interval");
+      wall_time_in_history = prm.get_bool("Wall time in history");
+      revolved_copy        = prm.get_bool("Revolved copy");
+      revolved_angle       = prm.get_double("Revolved angle");
+      prm.leave_subsection();
+    }
+
+    void Output::validate() const
+    {
+      require(!directory.empty(),
+              "Output/Output directory",
+              "must not be empty");
+    }
+  } // namespace parameters
+} // namespace formsolve

@@ -1,0 +1,218 @@
+#include <formsolve/parameters/require.h>
+#include <formsolve/parameters/solvers.h>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    using namespace dealii::Patterns;
+
+    void TimeStepping::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time stepping");
+      prm.declare_entry(
+        "Time step",
+        "0.25",
+        Double(),
+        "Nominal (and largest) time step (s). With the punch speed it sets "
+        "the punch travel per step.");
+      prm.declare_entry(
+        "Minimum time step",
+        "1e-3",
+        Double(),
+        "Step control: a step that fails (Newton diverges or stalls, the "
+        "linear solver fails) is retried with the time step multiplied by "
+        "'Cutback factor'; below this time step (s) the run stops, after "
+        "writing the output of the last converged step.");
+      prm.declare_entry("Cutback factor",
+                        "0.5",
+                        Double(0.01, 0.9),
+                        "Factor on the time step after a failed step (-).");
+      prm.declare_entry(
+        "Growth factor",
+        "1.5",
+        Double(1, 10),
+        "After an easy step (at most 'Easy step iterations' Newton "
+        "iterations) the time step grows by this factor, up to 'Time "
+        "step' (-).");
+      prm.declare_entry("Easy step iterations",
+                        "8",
+                        Integer(1),
+                        "Newton iterations (all passes of a step) up to "
+                        "which a step counts as easy.");
+      prm.declare_entry("Max cutbacks",
+                        "8",
+                        Integer(0),
+                        "Retries of one step at most; then the run stops.");
+      prm.declare_entry(
+        "End of run",
+        "stroke",
+        Selection("stroke|holder release|draw-through"),
+        "stroke: the run ends at the punch stroke. holder release: also "
+        "ends once the blank rim has left the blank holder. draw-through: "
+        "also ends once the whole blank lies inside the die opening (the "
+        "cup is drawn through). The reason is printed and written to "
+        "run-summary.txt.");
+      prm.leave_subsection();
+    }
+
+    void TimeStepping::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time stepping");
+      time_step         = prm.get_double("Time step");
+      minimum_time_step = prm.get_double("Minimum time step");
+      cutback_factor    = prm.get_double("Cutback factor");
+      growth_factor     = prm.get_double("Growth factor");
+      easy_iterations   = prm.get_integer("Easy step iterations");
+      max_cutbacks      = prm.get_integer("Max cutbacks");
+      const auto end    = prm.get("End of run");
+      end_of_run        = end == "stroke"           ? EndOfRun::stroke
+                          : end == "holder release" ? EndOfRun::holder_release
+                                                    : EndOfRun::draw_through;
+      prm.leave_subsection();
+    }
+
+    void TimeStepping::validate() const
+    {
+      require_positive(time_step, "Time stepping/Time step", "s");
+      require_positive(minimum_time_step,
+                       "Time stepping/Minimum time step",
+                       "s");
+      require(minimum_time_step <= time_step,
+              "Time stepping/Minimum time step",
+              "must not exceed Time stepping/Time step");
+    }
+
+    void NonlinearSolver::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      prm.declare_entry("Max iterations",
+                        "60",
+                        Integer(1),
+                        "Newton iterations per solve before the step fails "
+                        "(and is retried with a smaller time step).");
+      prm.declare_entry(
+        "Residual tolerance",
+        "1e-6",
+        Double(0),
+        "Converged when |r| <= tol * |f_int|, the norm of the element "
+        "internal-force vectors, and the blank-holder force is within tol "
+        "of its set value (-) ...");
+      prm.declare_entry("Correction tolerance",
+                        "1e-6",
+                        Double(0),
+                        "... and |dv| <= tol * |v| (-), and the contact set is "
+                        "unchanged.");
+      prm.declare_entry(
+        "Max line search steps",
+        "6",
+        Integer(0, 30),
+        "Trial step lengths per Newton iteration: regula falsi on the "
+        "directional derivative dv.r(v + alpha dv) of the potential.");
+      prm.declare_entry(
+        "Picard iterations",
+        "0",
+        Integer(0),
+        "Direct (secant) iterations at the start of every step.");
+      prm.declare_entry(
+        "Picard fallback",
+        "true",
+        Bool(),
+        "When the line search fails, do three direct (secant) iterations, "
+        "then return to Newton.");
+      prm.declare_entry("Log iterations",
+                        "false",
+                        Bool(),
+                        "Print one line per nonlinear iteration: residual, "
+                        "correction, line-search factor, contact-set changes.");
+      prm.leave_subsection();
+    }
+
+    void NonlinearSolver::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      max_iterations        = prm.get_integer("Max iterations");
+      residual_tolerance    = prm.get_double("Residual tolerance");
+      correction_tolerance  = prm.get_double("Correction tolerance");
+      max_line_search_steps = prm.get_integer("Max line search steps");
+      picard_iterations     = prm.get_integer("Picard iterations");
+      picard_fallback       = prm.get_bool("Picard fallback");
+      log_iterations        = prm.get_bool("Log iterations");
+      prm.leave_subsection();
+    }
+
+    void NonlinearSolver::validate() const
+    {
+      require_positive(residual_tolerance,
+                       "Nonlinear solver/Residual tolerance",
+                       "");
+      require_positive(correction_tolerance,
+                       "Nonlinear solver/Correction tolerance",
+                       "");
+    }
+
+    void LinearSolver::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      prm.declare_entry(
+        "Type",
+        "direct",
+        Selection("direct|iterative"),
+        "direct: sparse LU through Trilinos Amesos; iterative: a "
+        "Krylov solver with ML algebraic multigrid.");
+      prm.declare_entry(
+        "Direct solver",
+        "MUMPS",
+        Selection("MUMPS|KLU"),
+        "Amesos back end (MUMPS runs in parallel; KLU gathers the "
+        "matrix on one rank).");
+      prm.declare_entry("Iterative solver",
+                        "GMRES",
+                        Selection("GMRES|CG"),
+                        "Krylov method (CG only for frictionless contact: the "
+                        "friction tangent is not symmetric).");
+      prm.declare_entry(
+        "Tolerance",
+        "1e-8",
+        Double(0),
+        "Relative residual tolerance of the iterative solver (-).");
+      prm.declare_entry("Max iterations",
+                        "2000",
+                        Integer(1),
+                        "Iteration limit of the iterative solver.");
+      prm.declare_entry(
+        "Condition estimate iterations",
+        "0",
+        Integer(0),
+        "Diagnostics: after every linear solve, this many unpreconditioned "
+        "CG iterations on the system matrix give a Lanczos estimate of its "
+        "condition number (history.csv column condition_estimate; a lower "
+        "bound, meaningful for symmetric systems, i.e. without friction). "
+        "0: off.");
+      prm.leave_subsection();
+    }
+
+    void LinearSolver::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      type          = prm.get("Type") == "direct" ? LinearSolverType::direct
+                                                  : LinearSolverType::iterative;
+      direct_solver = prm.get("Direct solver") == "MUMPS" ? DirectSolver::mumps
+                                                          : DirectSolver::klu;
+      iterative_solver     = prm.get("Iterative solver") == "CG"
+                               ? IterativeSolver::cg
+                               : IterativeSolver::gmres;
+      tolerance            = prm.get_double("Tolerance");
+      max_iterations       = prm.get_integer("Max iterations");
+      condition_iterations = prm.get_integer("Condition estimate iterations");
+      prm.leave_subsection();
+    }
+
+    void LinearSolver::validate() const
+    {
+      require(tolerance > 0 && tolerance < 1,
+              "Linear solver/Tolerance",
+              "must lie in (0, 1)");
+    }
+  } // namespace parameters
+} // namespace formsolve

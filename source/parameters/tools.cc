@@ -1,0 +1,204 @@
+#include <formsolve/parameters/require.h>
+#include <formsolve/parameters/tools.h>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    using namespace dealii::Patterns;
+
+    void Tool::declare(ParameterHandler &prm, const Tool &d)
+    {
+      prm.declare_entry("Enabled",
+                        d.enabled ? "true" : "false",
+                        Bool(),
+                        "Whether this tool takes part.");
+      prm.declare_entry(
+        "Shape",
+        d.shape == ToolShape::round               ? "round"
+        : d.shape == ToolShape::rounded_rectangle ? "rounded rectangle"
+                                                  : "flat",
+        Selection("round|rounded rectangle|flat"),
+        "round: surface of revolution about the z axis (in the axisymmetric "
+        "model its r-z profile); rounded rectangle: for square cups (3-D "
+        "models); flat: an infinite plane.");
+      prm.declare_entry(
+        "Diameter",
+        str(d.diameter),
+        Double(0),
+        "Round tools: punch diameter, die opening diameter, or blank "
+        "holder inner diameter (mm).");
+      prm.declare_entry("Length",
+                        str(d.length),
+                        Double(0),
+                        "Rounded rectangle: full size along x (mm).");
+      prm.declare_entry("Width",
+                        str(d.width),
+                        Double(0),
+                        "Rounded rectangle: full size along y (mm).");
+      prm.declare_entry(
+        "Corner radius",
+        str(d.corner_radius),
+        Double(0),
+        "Rounded rectangle: in-plane corner radius (mm); at least the "
+        "profile radius for a punch.");
+      prm.declare_entry("Profile radius",
+                        str(d.profile_radius),
+                        Double(0),
+                        "Radius of the rounded working edge (punch nose, die "
+                        "entry) (mm).");
+      prm.declare_entry(
+        "Gap",
+        str(d.gap),
+        Double(),
+        "Initial distance between the tool face and the sheet surface "
+        "it acts on (mm). The die is below the sheet (z <= 0), punch "
+        "and blank holder above (z >= thickness).");
+      prm.declare_entry("Friction coefficient",
+                        str(d.friction_coefficient),
+                        Double(0),
+                        "Coulomb friction coefficient mu (-).");
+      prm.declare_entry(
+        "Penalty factor",
+        str(d.penalty_factor),
+        Double(0),
+        "Fixed contact penalty for this tool (N/mm^3, contact pressure "
+        "per mm of penetration); 0 takes Contact/Penalty factor.");
+      prm.declare_entry(
+        "Allowed penetration",
+        str(d.allowed_penetration),
+        Double(0),
+        "Adaptive penalty: allowed penetration delta into this tool (mm); "
+        "0 takes Contact/Allowed penetration.");
+    }
+
+    void Tool::parse(ParameterHandler &prm)
+    {
+      enabled              = prm.get_bool("Enabled");
+      const auto s         = prm.get("Shape");
+      shape                = s == "round"               ? ToolShape::round
+                             : s == "rounded rectangle" ? ToolShape::rounded_rectangle
+                                                        : ToolShape::flat;
+      diameter             = prm.get_double("Diameter");
+      length               = prm.get_double("Length");
+      width                = prm.get_double("Width");
+      corner_radius        = prm.get_double("Corner radius");
+      profile_radius       = prm.get_double("Profile radius");
+      gap                  = prm.get_double("Gap");
+      friction_coefficient = prm.get_double("Friction coefficient");
+      penalty_factor       = prm.get_double("Penalty factor");
+      allowed_penetration  = prm.get_double("Allowed penetration");
+    }
+
+    void Tool::validate() const
+    {
+      if (!enabled)
+        return;
+      const std::string e = "Tools/" + name + "/";
+      require(std::isfinite(gap), e + "Gap", "must be a finite number (mm)");
+      if (shape == ToolShape::round && name == "Punch")
+        {
+          require_positive(diameter, e + "Diameter", "mm");
+          require(profile_radius <= 0.5 * diameter,
+                  e + "Profile radius",
+                  "must not exceed half the Diameter");
+        }
+      if (shape == ToolShape::rounded_rectangle)
+        {
+          require(length > 0 && width > 0,
+                  e + "Length",
+                  "Length and Width must be positive (mm)");
+          require(corner_radius <= 0.5 * std::min(length, width),
+                  e + "Corner radius",
+                  "must not exceed half of Length and Width");
+          if (name == "Punch")
+            require(corner_radius >= profile_radius,
+                    e + "Corner radius",
+                    "must be at least the Profile radius for a punch");
+        }
+    }
+
+    void Tools::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Tools");
+      Tool p{"Punch"};
+      Tool d{"Die", true, ToolShape::round, 42.5, 42.5, 42.5, 8, 8};
+      Tool b{"Blank holder", true, ToolShape::round, 58.5, 0, 0, 0, 0};
+
+      prm.enter_subsection("Punch");
+      Tool::declare(prm, p);
+      prm.declare_entry(
+        "Stroke",
+        "30",
+        Double(0),
+        "Total punch travel (mm): the run ends here at the latest (see "
+        "Time stepping/End of run).");
+      prm.declare_entry("Speed",
+                        "1",
+                        Double(0),
+                        "Punch speed (mm/s), moving in -z.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Die");
+      Tool::declare(prm, d);
+      prm.leave_subsection();
+
+      prm.enter_subsection("Blank holder");
+      Tool::declare(prm, b);
+      prm.declare_entry(
+        "Control",
+        "force",
+        Selection("gap|force"),
+        "gap: the holder stays where 'Gap' puts it. force: the holder moves "
+        "along z so that its contact force on the sheet equals 'Force' in "
+        "every step (solved with the velocities, doc/theory.md); it stops "
+        "where it is once the blank rim has left it.");
+      prm.declare_entry(
+        "Force",
+        "2670",
+        Double(0),
+        "Blank-holder force for Control = force (N), for the full part "
+        "(the model's share is taken by the symmetry factor).");
+      prm.leave_subsection();
+      prm.leave_subsection();
+    }
+
+    void Tools::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Tools");
+      prm.enter_subsection("Punch");
+      punch.parse(prm);
+      punch_stroke = prm.get_double("Stroke");
+      punch_speed  = prm.get_double("Speed");
+      prm.leave_subsection();
+      prm.enter_subsection("Die");
+      die.parse(prm);
+      prm.leave_subsection();
+      prm.enter_subsection("Blank holder");
+      blank_holder.parse(prm);
+      holder_control = prm.get("Control") == "force" ? HolderControl::force
+                                                     : HolderControl::gap;
+      holder_force   = prm.get_double("Force");
+      prm.leave_subsection();
+      prm.leave_subsection();
+    }
+
+    void Tools::validate() const
+    {
+      punch.validate();
+      die.validate();
+      blank_holder.validate();
+      require(punch.enabled, "Tools/Punch/Enabled", "the punch drives the run");
+      require_positive(punch_speed, "Tools/Punch/Speed", "mm/s");
+      require_positive(punch_stroke, "Tools/Punch/Stroke", "mm");
+      if (blank_holder.enabled && holder_control == HolderControl::force)
+        {
+          require_positive(holder_force, "Tools/Blank holder/Force", "N");
+          require(blank_holder.shape != ToolShape::flat,
+                  "Tools/Blank holder/Control",
+                  "force needs a holder with an opening (Shape round or "
+                  "rounded rectangle), so that the blank can leave it");
+        }
+    }
+  } // namespace parameters
+} // namespace formsolve

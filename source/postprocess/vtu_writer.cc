@@ -1,0 +1,166 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/numerics/data_component_interpretation.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <formsolve/model/dimensions.h>
+#include <formsolve/postprocess/revolved_output.h>
+#include <formsolve/postprocess/vtu_writer.h>
+
+#include <fstream>
+#include <memory>
+
+namespace formsolve
+{
+  namespace postprocess
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /// One component of a vector-valued nodal field, as a named scalar.
+      template <int dim>
+      class Component : public DataPostprocessorScalar<dim>
+      {
+      public:
+        Component(const std::string &name, const unsigned int c)
+            : DataPostprocessorScalar<dim>(name, update_values)
+            , c(c)
+        {}
+        void
+        evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &in,
+                              std::vector<Vector<double>> &out) const override
+        {
+          for (unsigned int q = 0; q < out.size(); ++q)
+            out[q](0) = in.solution_values[q](c);
+        }
+
+      private:
+        unsigned int c;
+      };
+
+      /// Adds the fields of @p f to @p out; cell averages of the history go
+      /// to @p cell_data, which must outlive the patches.
+      template <int dim, class DataOutType>
+      void add_fields(DataOutType                                  &out,
+                      const DoFHandler<dim>                        &dof_handler,
+                      const OutputFields<dim>                      &f,
+                      std::vector<Vector<float>>                   &cell_data,
+                      std::vector<std::unique_ptr<Component<dim>>> &scalars)
+      {
+        out.attach_dof_handler(dof_handler);
+        const std::vector<
+          DataComponentInterpretation::DataComponentInterpretation>
+          vector_field(
+            dim,
+            DataComponentInterpretation::component_is_part_of_vector);
+        out.add_data_vector(*f.velocity,
+                            std::vector<std::string>(dim, "velocity"),
+                            DataOut<dim>::type_dof_data,
+                            vector_field);
+        out.add_data_vector(*f.displacement,
+                            std::vector<std::string>(dim, "displacement"),
+                            DataOut<dim>::type_dof_data,
+                            vector_field);
+        for (const auto &s : f.nodal)
+          {
+            scalars.push_back(
+              std::make_unique<Component<dim>>(s.name, s.component));
+            out.add_data_vector(*s.values, *scalars.back());
+          }
+
+        // Cell averages of the quadrature-point history.
+        const auto        &tria    = dof_handler.get_triangulation();
+        const unsigned int n       = tria.n_active_cells();
+        const char        *names[] = {"equivalent_strain",
+                                      "equivalent_strain_rate",
+                                      "flow_stress",
+                                      "mean_stress",
+                                      "thickness_strain",
+                                      "mpi_rank"};
+        cell_data.assign(6, Vector<float>(n));
+        std::vector<double> values;
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const auto   h = f.history->get_data(cell);
+              const auto   i = cell->active_cell_index();
+              const double w = 1. / h.size();
+              for (const auto &p : h)
+                {
+                  p->pack_values(values);
+                  for (unsigned int k = 0; k < 5; ++k)
+                    cell_data[k][i] += w * values[k];
+                }
+              cell_data[5][i] = tria.locally_owned_subdomain();
+            }
+        for (unsigned int k = 0; k < 6; ++k)
+          out.add_data_vector(cell_data[k], names[k]);
+      }
+    } // namespace
+
+    template <int dim>
+    VtuWriter<dim>::VtuWriter(const parameters::Output &p)
+        : prm(p)
+    {}
+
+    template <int dim>
+    void VtuWriter<dim>::write(const unsigned int       step,
+                               const double             time,
+                               const DoFHandler<dim>   &dof_handler,
+                               const Mapping<dim>      &mapping,
+                               const OutputFields<dim> &fields)
+    {
+      const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
+      const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
+      {
+        DataOut<dim>                                 out;
+        std::vector<Vector<float>>                   cell_data;
+        std::vector<std::unique_ptr<Component<dim>>> scalars;
+        add_fields(out, dof_handler, fields, cell_data, scalars);
+        out.build_patches(mapping,
+                          dof_handler.get_fe().degree,
+                          DataOut<dim>::curved_inner_cells);
+        records.emplace_back(time,
+                             out.write_vtu_with_pvtu_record(prm.directory + "/",
+                                                            "solution",
+                                                            step,
+                                                            comm,
+                                                            5,
+                                                            0));
+        if (root)
+          {
+            std::ofstream pvd(prm.directory + "/solution.pvd");
+            DataOutBase::write_pvd_record(pvd, records);
+          }
+      }
+      if constexpr (dim == 2)
+        if (prm.revolved_copy)
+          {
+            // One subdivision, no curved cells: the patch vertices are the
+            // deformed ones, which the revolution needs.
+            SectionDataOut                             out;
+            std::vector<Vector<float>>                 cell_data;
+            std::vector<std::unique_ptr<Component<2>>> scalars;
+            add_fields(out, dof_handler, fields, cell_data, scalars);
+            out.build_patches(mapping, 1, DataOut<2>::no_curved_cells);
+            revolved_records.emplace_back(time,
+                                          write_revolved(out,
+                                                         prm.revolved_angle,
+                                                         prm.directory,
+                                                         step,
+                                                         comm));
+            if (root)
+              {
+                std::ofstream pvd(prm.directory + "/revolved.pvd");
+                DataOutBase::write_pvd_record(pvd, revolved_records);
+              }
+          }
+    }
+
+#define INSTANTIATE(dim) template class VtuWriter<dim>;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace postprocess
+} // namespace formsolve

@@ -1,0 +1,98 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_point_data.h>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/fe/fe_dgq.h>
+
+#include <formsolve/model/dimensions.h>
+#include <formsolve/refinement/adapt.h>
+
+namespace formsolve
+{
+  namespace refinement
+  {
+    using namespace dealii;
+    using simulation::VectorType;
+
+    template <int dim>
+    AdaptReport adapt_mesh(simulation::State<dim>        &state,
+                           const RefinementCriteria<dim> &criteria,
+                           const solver::Assembler<dim>  &assembler)
+    {
+      AdaptReport report;
+      auto       &tria     = state.tria;
+      state.velocity_ghost = state.velocity;
+      const auto flags     = criteria.mark(state.dof_handler,
+                                       *state.mapping,
+                                       state.velocity_ghost,
+                                       state.tools);
+      report.refine        = flags.refine;
+      report.coarsen       = flags.coarsen;
+      if (flags.refine + flags.coarsen == 0)
+        return report;
+
+      // Smoothing drops coarsening flags of incomplete families (and adds
+      // refinement for the 2:1 balance): count what is left.
+      tria.prepare_coarsening_and_refinement();
+      unsigned int left = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            (cell->refine_flag_set() || cell->coarsen_flag_set()))
+          ++left;
+      if (Utilities::MPI::sum(left, state.comm) == 0)
+        return report;
+
+      report.volume_before =
+        assembler.volume(state.dof_handler, *state.mapping);
+      report.strain_before = assembler.strain_integral(state.dof_handler,
+                                                       *state.mapping,
+                                                       state.history);
+      report.cells_before  = tria.n_global_active_cells();
+
+      parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+        state.dof_handler);
+      const std::vector<const VectorType *> in = {&state.velocity_ghost,
+                                                  &state.displacement_ghost};
+      transfer.prepare_for_coarsening_and_refinement(in);
+      // History: L2 projection onto discontinuous Q_p per cell, which keeps
+      // cell integrals when cells are split or merged.
+      const FE_DGQ<dim> projection(state.prm.mesh.degree);
+      parallel::distributed::ContinuousQuadratureDataTransfer<
+        dim,
+        simulation::QuadraturePointHistory>
+        history_transfer(projection,
+                         assembler.quadrature(),
+                         assembler.quadrature());
+      store_parent_history(tria, assembler.quadrature(), state.history);
+      history_transfer.prepare_for_coarsening_and_refinement(tria,
+                                                             state.history);
+      state.mapping.reset();
+      tria.execute_coarsening_and_refinement();
+
+      state.setup_dofs(assembler);
+      std::vector<VectorType *> out = {&state.velocity, &state.displacement};
+      transfer.interpolate(out);
+      state.constraints.distribute(state.velocity);
+      state.constraints.distribute(state.displacement);
+      state.velocity_ghost     = state.velocity;
+      state.displacement_ghost = state.displacement;
+      history_transfer.interpolate();
+      state.update_contact_areas();
+
+      report.changed      = true;
+      report.cells_after  = tria.n_global_active_cells();
+      report.dofs         = state.dof_handler.n_dofs();
+      report.volume_after = assembler.volume(state.dof_handler, *state.mapping);
+      report.strain_after = assembler.strain_integral(state.dof_handler,
+                                                      *state.mapping,
+                                                      state.history);
+      return report;
+    }
+
+#define INSTANTIATE(dim)                                           \
+  template AdaptReport adapt_mesh(simulation::State<dim> &,        \
+                                  const RefinementCriteria<dim> &, \
+                                  const solver::Assembler<dim> &);
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace refinement
+} // namespace formsolve

@@ -1,0 +1,176 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/numerics/error_estimator.h>
+
+#include <formsolve/model/dimensions.h>
+#include <formsolve/refinement/mesh_refinement.h>
+
+#include <algorithm>
+
+namespace formsolve
+{
+  namespace refinement
+  {
+    using namespace dealii;
+
+    template <int dim>
+    RefinementCriteria<dim>::RefinementCriteria(
+      const parameters::MeshRefinement &p,
+      const tools::ToolSet<dim>        &tools)
+        : prm(p)
+    {
+      for (unsigned int t = 0; t < tools.size(); ++t)
+        {
+          const std::string &key = tools.key(t);
+          tool_level.push_back(key == "punch" ? p.punch_level
+                               : key == "die" ? p.die_level
+                                              : p.holder_level);
+        }
+    }
+
+    template <int dim>
+    unsigned int
+    RefinementCriteria<dim>::band_level(const Point<dim>          &x,
+                                        const double               diameter,
+                                        const tools::ToolSet<dim> &tools,
+                                        const double band_factor) const
+    {
+      unsigned int level = 0;
+      for (unsigned int t = 0; t < tools.size(); ++t)
+        if (tool_level[t] > level &&
+            tools[t].distance_to_radius(x) - 0.5 * diameter <
+              band_factor * prm.band_width)
+          level = tool_level[t];
+      return level;
+    }
+
+    template <int dim>
+    RefinementFlags RefinementCriteria<dim>::mark(
+      const DoFHandler<dim>                       &dof_handler,
+      const Mapping<dim>                          &mapping,
+      const dealii::TrilinosWrappers::MPI::Vector &velocity,
+      const tools::ToolSet<dim>                   &tools) const
+    {
+      auto &tria = const_cast<parallel::distributed::Triangulation<dim> &>(
+        dynamic_cast<const parallel::distributed::Triangulation<dim> &>(
+          dof_handler.get_triangulation()));
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          cell->clear_refine_flag();
+          cell->clear_coarsen_flag();
+        }
+
+      const bool kelly = prm.indicator == parameters::Indicator::kelly;
+      if (kelly)
+        {
+          Vector<float> indicator(tria.n_active_cells());
+          KellyErrorEstimator<dim>::estimate(mapping,
+                                             dof_handler,
+                                             QGauss<dim - 1>(
+                                               dof_handler.get_fe().degree + 1),
+                                             {},
+                                             velocity,
+                                             indicator);
+          parallel::distributed::GridRefinement::
+            refine_and_coarsen_fixed_number(tria,
+                                            indicator,
+                                            prm.refine_fraction,
+                                            prm.coarsen_fraction);
+        }
+
+      RefinementFlags  flags;
+      const Point<dim> centre = [] {
+        Point<dim> c;
+        for (unsigned int d = 0; d < dim; ++d)
+          c[d] = 0.5;
+        return c;
+      }();
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          if (!cell->is_locally_owned())
+            continue;
+          const Point<dim> x =
+            mapping.transform_unit_to_real_cell(cell, centre);
+          const unsigned int level = cell->level();
+          // Size of the level-0 ancestor: children must not leave the band
+          // just because they are smaller than the cell that entered it.
+          const double       h0        = cell->diameter() * (1u << level);
+          const unsigned int refine_to = band_level(x, h0, tools, 1.);
+          // A child's centre lies at most h0/4 beyond its parent's: with the
+          // margin h0 (not h0/2) a cell refined now is kept next time.
+          const unsigned int keep_to =
+            band_level(x, 2 * h0, tools, prm.coarsen_factor);
+          const bool by_indicator =
+            kelly && cell->refine_flag_set() && level < prm.indicator_level;
+          const bool refine = level < refine_to || by_indicator;
+          const bool coarsen =
+            !refine && level > keep_to &&
+            (!kelly || cell->coarsen_flag_set() || level > prm.indicator_level);
+          cell->clear_refine_flag();
+          cell->clear_coarsen_flag();
+          if (refine)
+            {
+              cell->set_refine_flag();
+              ++flags.refine;
+            }
+          else if (coarsen)
+            {
+              cell->set_coarsen_flag();
+              ++flags.coarsen;
+            }
+        }
+      const MPI_Comm comm = tria.get_communicator();
+      flags.refine        = Utilities::MPI::sum(flags.refine, comm);
+      flags.coarsen       = Utilities::MPI::sum(flags.coarsen, comm);
+      return flags;
+    }
+
+    template <int dim>
+    void store_parent_history(const Triangulation<dim>        &tria,
+                              const Quadrature<dim>           &quadrature,
+                              simulation::HistoryStorage<dim> &history)
+    {
+      std::vector<double> values, mean;
+      for (const auto &parent : tria.cell_iterators())
+        {
+          if (!parent->has_children())
+            continue;
+          bool family = true;
+          for (unsigned int c = 0; c < parent->n_children() && family; ++c)
+            {
+              const auto child = parent->child(c);
+              family = child->is_active() && child->is_locally_owned() &&
+                       child->coarsen_flag_set();
+            }
+          if (!family)
+            continue;
+          history.initialize(parent, quadrature.size());
+          const auto target = history.get_data(parent);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const unsigned int c =
+                GeometryInfo<dim>::child_cell_from_point(quadrature.point(q));
+              const auto data = history.get_data(parent->child(c));
+              mean.assign(data[0]->number_of_values(), 0.);
+              for (unsigned int k = 0; k < data.size(); ++k)
+                {
+                  // Unit-cell weights: the child's (reference) average.
+                  data[k]->pack_values(values);
+                  for (unsigned int i = 0; i < mean.size(); ++i)
+                    mean[i] += quadrature.weight(k) * values[i];
+                }
+              target[q]->unpack_values(mean);
+            }
+        }
+    }
+
+#define INSTANTIATE(dim)                                                      \
+  template void store_parent_history<dim>(const Triangulation<dim> &,         \
+                                          const Quadrature<dim> &,            \
+                                          simulation::HistoryStorage<dim> &); \
+  template class RefinementCriteria<dim>;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace refinement
+} // namespace formsolve

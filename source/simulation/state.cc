@@ -1,0 +1,149 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <formsolve/contact/contact_search.h>
+#include <formsolve/geometry/blank_mesh.h>
+#include <formsolve/model/dimensions.h>
+#include <formsolve/simulation/state.h>
+#include <formsolve/solver/assembler.h>
+
+#include <limits>
+
+namespace formsolve
+{
+  namespace simulation
+  {
+    using namespace dealii;
+
+    template <int dim>
+    State<dim>::State(const parameters::Run &run, const MPI_Comm comm)
+        : prm(run)
+        , comm(comm)
+        , kinematics(run.geometry.model == model::Model::axisymmetric)
+        , tria(comm)
+        , fe(FE_Q<dim>(run.mesh.degree), dim)
+        , dof_handler(tria)
+        , reference_mapping(run.mesh.degree)
+        , tools(run.tools, run.contact, run.geometry.thickness)
+    {
+      const bool control =
+        run.tools.blank_holder.enabled &&
+        run.tools.holder_control == parameters::HolderControl::force;
+      holder.force_control = control;
+      holder.target =
+        control ? run.tools.holder_force / run.geometry.symmetry_factor() : 0.;
+    }
+
+    template <int dim>
+    void State<dim>::create_mesh(const solver::Assembler<dim> &assembler)
+    {
+      geometry::create_blank_mesh(prm.geometry, prm.mesh, tria);
+      setup_dofs(assembler);
+    }
+
+    template <int dim>
+    void State<dim>::setup_dofs(const solver::Assembler<dim> &assembler)
+    {
+      mapping.reset();
+      dof_handler.distribute_dofs(fe);
+      owned = dof_handler.locally_owned_dofs();
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+
+      constraints.clear();
+      constraints.reinit(relevant);
+      DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+      // No velocity normal to a symmetry plane; no radial velocity on the
+      // axis of an axisymmetric model.
+      const Functions::ZeroFunction<dim> zero(dim);
+      auto fix = [&](const types::boundary_id id, const unsigned int c) {
+        VectorTools::interpolate_boundary_values(
+          reference_mapping,
+          dof_handler,
+          id,
+          zero,
+          constraints,
+          fe.component_mask(FEValuesExtractors::Scalar(c)));
+      };
+      const model::Model m = prm.geometry.model;
+      if (model::symmetric_in_x(m))
+        fix(geometry::symmetry_x, 0);
+      if (model::symmetric_in_y(m))
+        fix(geometry::symmetry_y, 1);
+      if (m == model::Model::axisymmetric)
+        fix(geometry::axis, 0);
+      constraints.close();
+
+      velocity.reinit(owned, comm);
+      displacement.reinit(owned, comm);
+      velocity_ghost.reinit(owned, relevant, comm);
+      displacement_ghost.reinit(owned, relevant, comm);
+      mapping =
+        std::make_unique<MappingQEulerian<dim, VectorType>>(prm.mesh.degree,
+                                                            dof_handler,
+                                                            displacement_ghost);
+      history.clear();
+      assembler.initialize_history(dof_handler, history);
+      contact::ContactSearch<dim>(prm.contact.search_distance)
+        .setup(dof_handler, reference_mapping, contact_set);
+      contact_state.reset(contact_set.nodes.size(), tools.size());
+    }
+
+    template <int dim>
+    void State<dim>::update_contact_areas()
+    {
+      contact::ContactSearch<dim>(prm.contact.search_distance)
+        .update_areas(dof_handler, *mapping, kinematics, contact_set);
+    }
+
+    template <int dim>
+    void State<dim>::advance(const double                  dt,
+                             const solver::Assembler<dim> &assembler)
+    {
+      velocity_ghost = velocity;
+      assembler.update_history(dof_handler,
+                               *mapping,
+                               velocity_ghost,
+                               dt,
+                               history);
+      displacement.add(dt, velocity);
+      displacement_ghost = displacement;
+      tools.advance(dt);
+      time += dt;
+      ++step;
+    }
+
+    template <int dim>
+    StepSnapshot State<dim>::snapshot() const
+    {
+      return StepSnapshot{velocity, contact_state, holder.velocity};
+    }
+
+    template <int dim>
+    void State<dim>::restore(const StepSnapshot &s)
+    {
+      velocity        = s.velocity;
+      contact_state   = s.contact_state;
+      holder.velocity = s.holder_velocity;
+    }
+
+    template <int dim>
+    double State<dim>::max_lateral_distance(const unsigned int t) const
+    {
+      double d = -std::numeric_limits<double>::max();
+      for (const auto &node : contact_set.nodes)
+        {
+          Point<dim> x = node.reference_position;
+          for (unsigned int c = 0; c < dim; ++c)
+            x[c] += displacement_ghost[node.dofs[c]];
+          d = std::max(d, tools[t].lateral_distance(x));
+        }
+      return Utilities::MPI::max(d, comm);
+    }
+
+#define INSTANTIATE(dim) template struct State<dim>;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace simulation
+} // namespace formsolve

@@ -1,0 +1,353 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <formsolve/contact/contact_search.h>
+#include <formsolve/model/dimensions.h>
+#include <formsolve/postprocess/history_writer.h>
+#include <formsolve/postprocess/progress.h>
+#include <formsolve/refinement/adapt.h>
+#include <formsolve/simulation/time_loop.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace formsolve
+{
+  namespace simulation
+  {
+    using namespace dealii;
+
+    template <int dim>
+    TimeLoop<dim>::TimeLoop(const parameters::Run  &run,
+                            const ParameterHandler &ph)
+        : prm(run)
+        , parameter_handler(ph)
+        , comm(MPI_COMM_WORLD)
+        , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+        // Rank 0's timings; no communicator, so an error on the way out of
+        // run() cannot deadlock in the timer's destructor.
+        , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+        , material(run.material)
+        , state(run, comm)
+        , assembler(material,
+                    state.kinematics,
+                    state.reference_mapping,
+                    run.mesh.degree)
+        , step_solver(run, state, assembler, timer, pcout)
+        , criteria(run.refinement, state.tools)
+    {}
+
+    template <int dim>
+    void TimeLoop<dim>::check_initial_scene()
+    {
+      contact::ContactSearch<dim>(prm.contact.search_distance)
+        .evaluate(state.tools,
+                  state.displacement_ghost,
+                  state.velocity_ghost,
+                  0.,
+                  state.contact_state,
+                  state.contact_set);
+      const double tol = 1e-6 * prm.geometry.thickness;
+      for (unsigned int t = 0; t < state.tools.size(); ++t)
+        {
+          double worst = 0;
+          for (const auto &p : state.contact_set.pairs)
+            if (p.tool == t)
+              worst = std::max(worst, -p.gap);
+          worst = Utilities::MPI::max(worst, comm);
+          std::ostringstream s;
+          s << "Tools/" << state.tools[t].name()
+            << ": the blank starts inside this tool (" << worst
+            << " mm deep); check its Gap, Diameter and Profile radius "
+            << "against Geometry";
+          AssertThrow(worst <= tol, ExcMessage(s.str()));
+        }
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::prepare_output_directory()
+    {
+      const std::string &dir = prm.output.directory;
+      int                ok  = 1;
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          std::error_code ec;
+          std::filesystem::create_directories(dir, ec);
+          const std::string probe = dir + "/.formsolve-write-test";
+          ok                      = !ec && std::ofstream(probe).good();
+          std::filesystem::remove(probe, ec);
+          if (ok)
+            parameter_handler.print_parameters(dir + "/parameters.prm",
+                                               ParameterHandler::PRM);
+        }
+      ok = Utilities::MPI::min(ok, comm);
+      AssertThrow(ok,
+                  ExcMessage(
+                    "Output/Output directory: cannot create or write '" + dir +
+                    "'"));
+    }
+
+    template <int dim>
+    bool TimeLoop<dim>::adapt()
+    {
+      TimerOutput::Scope t(timer, "mesh refinement");
+      const auto         r = refinement::adapt_mesh(state, criteria, assembler);
+      if (!r.changed)
+        return false;
+      step_solver.reinit();
+      auto &log = *refinement_log;
+      log.set("step", state.step);
+      log.set("punch_travel", state.tools.punch_travel());
+      log.set("cells_before", r.cells_before);
+      log.set("cells_after", r.cells_after);
+      log.set("dofs", r.dofs);
+      log.set("flagged_refine", r.refine);
+      log.set("flagged_coarsen", r.coarsen);
+      log.set("volume_before", r.volume_before);
+      log.set("volume_after", r.volume_after);
+      log.set("strain_integral_before", r.strain_before);
+      log.set("strain_integral_after", r.strain_after);
+      log.write_row();
+      return true;
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::write_output()
+    {
+      TimerOutput::Scope t(timer, "output");
+      state.velocity_ghost = state.velocity;
+      contact_fields.fill(state,
+                          step_solver.forming_system().penalty_factors(),
+                          prm.contact.search_distance);
+      postprocess::OutputFields<dim> f{&state.velocity_ghost,
+                                       &state.displacement_ghost,
+                                       contact_fields.scalars(),
+                                       &state.history};
+      writer->write(state.step,
+                    state.time,
+                    state.dof_handler,
+                    *state.mapping,
+                    f);
+      last_output_step = state.step;
+    }
+
+    template <int dim>
+    std::string TimeLoop<dim>::check_events()
+    {
+      auto              &tools  = state.tools;
+      const unsigned int holder = tools.holder_index();
+      std::ostringstream travel;
+      travel << tools.punch_travel() << " mm";
+      if (holder != tools.none && !state.holder.released &&
+          state.max_lateral_distance(holder) <= 0)
+        {
+          // The rim has passed the holder's inner edge: it cannot press any
+          // more; it stays where it is.
+          state.holder.released       = true;
+          state.holder.force_control  = false;
+          state.holder.velocity       = 0;
+          state.holder.release_travel = tools.punch_travel();
+          tools.set_axial_velocity(holder, 0.);
+          pcout << "blank holder released at punch travel " << travel.str()
+                << ": the blank rim has left it" << std::endl;
+        }
+      if (prm.time.end_of_run == parameters::EndOfRun::holder_release &&
+          state.holder.released)
+        return "the blank rim left the blank holder at punch travel " +
+               travel.str();
+      if (prm.time.end_of_run == parameters::EndOfRun::draw_through &&
+          state.max_lateral_distance(tools.die_index()) <= 0)
+        return "drawn through: the whole blank lies inside the die opening "
+               "at punch travel " +
+               travel.str();
+      return "";
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::validate_scene()
+    {
+      state.create_mesh(assembler);
+      check_initial_scene();
+      pcout << "input valid: " << model::name(prm.geometry.model) << " model, "
+            << state.tria.n_global_active_cells() << " cells, "
+            << state.dof_handler.n_dofs() << " DoFs, " << state.tools.size()
+            << " tool(s)" << std::endl;
+    }
+
+    template <int dim>
+    RunSummary TimeLoop<dim>::run()
+    {
+      using Clock        = std::chrono::steady_clock;
+      const auto start   = Clock::now();
+      auto       seconds = [&]() {
+        return std::chrono::duration<double>(Clock::now() - start).count();
+      };
+
+      state.create_mesh(assembler);
+      step_solver.reinit();
+      check_initial_scene();
+      prepare_output_directory();
+
+      pcout << "formsolve: " << model::name(prm.geometry.model) << " model, "
+            << Utilities::MPI::n_mpi_processes(comm) << " rank(s), "
+            << state.tria.n_global_active_cells() << " cells, "
+            << state.dof_handler.n_dofs() << " DoFs (Q" << prm.mesh.degree
+            << ", " << prm.mesh.layers << " layers), contact "
+            << step_solver.strategy_name() << ", forces scaled by "
+            << prm.geometry.symmetry_factor() << " to the full part\n";
+
+      postprocess::HistoryWriter<dim> history(state);
+      writer = std::make_unique<postprocess::VtuWriter<dim>>(prm.output);
+      if (prm.refinement.enabled())
+        {
+          refinement_log = std::make_unique<postprocess::StatisticsTable>(
+            prm.output.directory + "/refinement.csv",
+            std::vector<std::string>{"step",
+                                     "punch_travel",
+                                     "cells_before",
+                                     "cells_after",
+                                     "dofs",
+                                     "flagged_refine",
+                                     "flagged_coarsen",
+                                     "volume_before",
+                                     "volume_after",
+                                     "strain_integral_before",
+                                     "strain_integral_after"},
+            Utilities::MPI::this_mpi_process(comm) == 0);
+          // Refine towards the radii before the first step, one level a pass.
+          for (unsigned int pass = 0; pass < 8 && adapt(); ++pass)
+            {}
+          pcout << "adapted mesh: " << state.tria.n_global_active_cells()
+                << " cells, " << state.dof_handler.n_dofs() << " DoFs"
+                << std::endl;
+        }
+      if (prm.output.interval > 0)
+        write_output();
+
+      RunSummary            summary;
+      postprocess::Progress progress;
+      progress.record(0., 0.);
+      summary.end_reason  = "the punch stroke was reached";
+      auto        &tools  = state.tools;
+      const double stroke = tools.punch_stroke(), speed = tools.punch_speed();
+      while (tools.punch_travel() < stroke * (1 - 1e-12))
+        {
+          if (prm.refinement.enabled() && state.step > 0 &&
+              state.step % prm.refinement.interval == 0)
+            adapt();
+          if (const auto reason = check_events(); !reason.empty())
+            {
+              summary.end_reason = reason;
+              break;
+            }
+          const double newton_start = seconds();
+          const auto   report =
+            step_solver.solve((stroke - tools.punch_travel()) / speed);
+          summary.newton_wall_time += seconds() - newton_start;
+          summary.newton_iterations += report.iterations;
+          summary.linear_iterations += report.linear_iterations;
+          summary.cutbacks += report.cutbacks;
+          if (!report.converged)
+            {
+              if (prm.output.interval > 0 &&
+                  last_output_step != int(state.step))
+                write_output();
+              std::ostringstream s;
+              s << "step " << state.step + 1 << " (punch travel "
+                << tools.punch_travel() << " mm): " << report.failure
+                << " (|r|/|f| = " << report.residual << ") after "
+                << report.cutbacks
+                << " time-step cut(s), at the minimum time step "
+                   "(Time stepping/Minimum time step = "
+                << prm.time.minimum_time_step
+                << " s); results up to the previous step are in "
+                << prm.output.directory;
+              AssertThrow(false, ExcMessage(s.str()));
+            }
+
+          const auto stats = step_solver.statistics(report.dt);
+          {
+            TimerOutput::Scope t(timer, "state update");
+            state.advance(report.dt, assembler);
+          }
+          summary.steps = state.step;
+          summary.n_dofs =
+            std::max(summary.n_dofs, double(state.dof_handler.n_dofs()));
+          summary.dof_steps += state.dof_handler.n_dofs();
+          const double wall = seconds();
+          history.write(state, report, stats, assembler, wall);
+
+          const double travel = tools.punch_travel();
+          progress.record(wall, travel);
+          const double sym = prm.geometry.symmetry_factor();
+          pcout << "step " << std::setw(4) << state.step << "  t=" << std::fixed
+                << std::setprecision(3) << state.time << " s  travel=" << travel
+                << " mm  F=" << std::setprecision(2)
+                << sym * stats.tool_force[tools.punch_index()][dim - 1] / 1000.
+                << " kN  newton=" << std::setw(2) << report.iterations
+                << (report.cutbacks > 0
+                      ? "  cut=" + std::to_string(report.cutbacks)
+                      : std::string())
+                << "  pen=" << std::scientific << std::setprecision(2)
+                << stats.max_penetration
+                << " mm  wall=" << postprocess::Progress::duration(wall)
+                << "  left~"
+                << postprocess::Progress::duration(progress.time_left(stroke))
+                << std::defaultfloat << std::endl;
+
+          const bool last = travel >= stroke * (1 - 1e-12);
+          if (prm.output.interval > 0 &&
+              (state.step % prm.output.interval == 0 || last))
+            write_output();
+        }
+      if (prm.output.interval > 0 && last_output_step != int(state.step))
+        write_output();
+
+      summary.wall_time = seconds();
+      write_summary(summary);
+      pcout << "done: " << state.step << " steps, " << summary.newton_iterations
+            << " Newton iterations, " << summary.cutbacks
+            << " time-step cut(s), " << summary.linear_iterations
+            << " linear solves/iterations, "
+            << postprocess::Progress::duration(summary.wall_time) << "; "
+            << summary.end_reason << "; results in " << prm.output.directory
+            << std::endl;
+      timer.print_summary();
+      return summary;
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::write_summary(RunSummary &summary) const
+    {
+      Utilities::System::MemoryStats m;
+      Utilities::System::get_memory_stats(m);
+      summary.peak_memory_kb = Utilities::MPI::sum(double(m.VmHWM), comm);
+      if (Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      // Machine-readable totals for benchmarks (doc/performance.md).
+      std::ofstream f(prm.output.directory + "/run-summary.txt");
+      f << "model = " << model::name(prm.geometry.model)
+        << "\nranks = " << Utilities::MPI::n_mpi_processes(comm)
+        << "\ndofs = " << summary.n_dofs
+        << "\nmean_dofs = " << summary.dof_steps / std::max(1u, summary.steps)
+        << "\ncells = " << state.tria.n_global_active_cells()
+        << "\nsteps = " << summary.steps
+        << "\nnewton_iterations = " << summary.newton_iterations
+        << "\nlinear_iterations = " << summary.linear_iterations
+        << "\ncutbacks = " << summary.cutbacks
+        << "\nwall_time = " << summary.wall_time
+        << "\nnewton_wall_time = " << summary.newton_wall_time
+        << "\npeak_memory_kb_all_ranks = " << summary.peak_memory_kb
+        << "\nfinal_punch_travel = " << state.tools.punch_travel()
+        << "\nholder_release_travel = " << state.holder.release_travel
+        << "\nend_reason = " << summary.end_reason << "\n";
+    }
+
+#define INSTANTIATE(dim) template class TimeLoop<dim>;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace simulation
+} // namespace formsolve

@@ -1,0 +1,268 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <formsolve/contact/contact_assembly.h>
+#include <formsolve/model/dimensions.h>
+#include <formsolve/solver/forming_system.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    using namespace dealii;
+
+    template <int dim>
+    FormingSystem<dim>::FormingSystem(const parameters::Run         &prm,
+                                      simulation::State<dim>        &state,
+                                      const Assembler<dim>          &assembler,
+                                      contact::PenaltyStrategy<dim> &strategy,
+                                      TimerOutput                   &timer)
+        : prm(prm)
+        , state(state)
+        , assembler(assembler)
+        , strategy(strategy)
+        , timer(timer)
+        , search(prm.contact.search_distance, prm.contact.max_status_flips)
+    {}
+
+    template <int dim>
+    void FormingSystem<dim>::reinit()
+    {
+      // The direct solver refers to the matrix: release it first.
+      linear_solver.reset();
+      DynamicSparsityPattern dsp(state.relevant);
+      DoFTools::make_sparsity_pattern(state.dof_handler,
+                                      dsp,
+                                      state.constraints,
+                                      false);
+      SparsityTools::distribute_sparsity_pattern(dsp,
+                                                 state.owned,
+                                                 state.comm,
+                                                 state.relevant);
+      matrix.reinit(state.owned, state.owned, dsp, state.comm);
+      if (strategy.needs_system())
+        body_matrix.reinit(matrix);
+      residual.reinit(state.owned, state.comm);
+      body_residual.reinit(state.owned, state.comm);
+      holder.reinit(state.owned, state.comm);
+      epsilon.clear();
+      last_active.clear();
+
+      std::vector<std::vector<bool>> modes;
+      DoFTools::extract_constant_modes(state.dof_handler,
+                                       ComponentMask(dim, true),
+                                       modes);
+      linear_solver = std::make_unique<LinearSolver>(prm.linear, modes);
+    }
+
+    template <int dim>
+    void FormingSystem<dim>::begin_step(const double step_dt)
+    {
+      dt              = step_dt;
+      step_max_linear = 0;
+      step_condition  = 0;
+    }
+
+    template <int dim>
+    void FormingSystem<dim>::begin_solve()
+    {
+      state.contact_set.begin_solve();
+      strategy.begin_solve();
+      w_accepted = w_trial = state.holder.velocity;
+      dw                   = 0;
+    }
+
+    template <int dim>
+    double FormingSystem<dim>::assemble(const VectorType &v, const bool newton)
+    {
+      state.velocity_ghost = v;
+      if (holder_controlled())
+        state.tools.set_axial_velocity(state.tools.holder_index(), w_trial);
+      {
+        TimerOutput::Scope t(timer, "contact");
+        search.evaluate(state.tools,
+                        state.displacement_ghost,
+                        state.velocity_ghost,
+                        dt,
+                        state.contact_state,
+                        state.contact_set);
+      }
+      // Body first: an adaptive strategy reads its residual and tangent;
+      // then the factors, then the contact terms with them.
+      {
+        TimerOutput::Scope t(timer, "assembly");
+        f_scale = assembler.assemble_body(state.dof_handler,
+                                          *state.mapping,
+                                          state.constraints,
+                                          state.velocity_ghost,
+                                          state.history,
+                                          dt,
+                                          newton,
+                                          &matrix,
+                                          residual);
+      }
+      bool estimate = true;
+      if (strategy.needs_system())
+        {
+          // Keep the body system for update_penalty(); estimate here only when
+          // there are no factors for these pairs yet.
+          body_matrix.copy_from(matrix);
+          body_residual = residual;
+          // The estimate is collective: decide on all ranks alike.
+          estimate = Utilities::MPI::max(int(epsilon.size() !=
+                                             state.contact_set.pairs.size()),
+                                         state.comm) != 0;
+        }
+      if (estimate)
+        estimate_penalty(residual, matrix);
+      last_newton = newton;
+      add_contact_terms();
+      return residual.l2_norm();
+    }
+
+    template <int dim>
+    void FormingSystem<dim>::estimate_penalty(const VectorType &r_b,
+                                              const MatrixType &K_b)
+    {
+      TimerOutput::Scope t(timer, "penalty estimate");
+      strategy.estimate(state.contact_set,
+                        state.tools,
+                        contact::SystemView{&r_b, &K_b, &state.constraints, dt},
+                        state.contact_state,
+                        epsilon);
+    }
+
+    template <int dim>
+    void FormingSystem<dim>::add_contact_terms()
+    {
+      TimerOutput::Scope t(timer, "assembly");
+      contact::add_contact_terms(state.contact_set,
+                                 epsilon,
+                                 state.tools,
+                                 prm.contact.regularisation_velocity,
+                                 dt,
+                                 last_newton,
+                                 state.constraints,
+                                 &matrix,
+                                 residual);
+      if (holder_controlled())
+        holder.assemble(state.contact_set,
+                        epsilon,
+                        state.tools,
+                        prm.contact.regularisation_velocity,
+                        dt,
+                        last_newton,
+                        state.constraints,
+                        state.holder.target);
+    }
+
+    template <int dim>
+    double FormingSystem<dim>::update_penalty()
+    {
+      if (!strategy.needs_system())
+        return -1;
+      estimate_penalty(body_residual, body_matrix);
+      matrix.copy_from(body_matrix);
+      residual = body_residual;
+      // The copy leaves the vector in 'insert' mode; settle it on every rank
+      // now, before ranks with and without contact pairs start adding.
+      residual.compress(VectorOperation::insert);
+      add_contact_terms();
+      return residual.l2_norm();
+    }
+
+    template <int dim>
+    unsigned int FormingSystem<dim>::solve(VectorType &dv)
+    {
+      TimerOutput::Scope t(timer, "linear solve");
+      VectorType         rhs(residual);
+      rhs *= -1.;
+      unsigned int its = linear_solver->solve(matrix, dv, rhs);
+      dw               = 0;
+      if (holder_controlled())
+        {
+          if (holder.engaged())
+            {
+              // Bordered system: one more solve with the same factorisation.
+              VectorType z(state.owned, state.comm);
+              its += linear_solver->solve_again(z, holder.column());
+              dw = holder.correction(dv, z);
+              dv.add(-dw, z);
+            }
+          else
+            dw = holder.closing_correction(state.tools.allowed_penetration(
+                                             state.tools.holder_index()),
+                                           dt);
+        }
+      step_max_linear = std::max(step_max_linear, its);
+      step_condition =
+        std::max(step_condition, linear_solver->condition_estimate());
+      state.constraints.distribute(dv);
+      return its;
+    }
+
+    template <int dim>
+    double
+    FormingSystem<dim>::directional_derivative(const VectorType &dv) const
+    {
+      return residual * dv +
+             (holder_controlled() ? dw * holder.residual() : 0.);
+    }
+
+    template <int dim>
+    void FormingSystem<dim>::set_step_length(const double alpha)
+    {
+      w_trial = w_accepted + alpha * dw;
+    }
+
+    template <int dim>
+    double FormingSystem<dim>::extra_residual() const
+    {
+      return holder_controlled()
+               ? std::abs(holder.residual()) / state.holder.target
+               : 0.;
+    }
+
+    template <int dim>
+    double FormingSystem<dim>::extra_correction() const
+    {
+      return holder_controlled()
+               ? std::abs(dw) /
+                   std::max(std::abs(w_accepted), state.tools.punch_speed())
+               : 0.;
+    }
+
+    template <int dim>
+    bool FormingSystem<dim>::contact_set_changed()
+    {
+      const auto       &pairs = state.contact_set.pairs;
+      std::vector<bool> active(pairs.size());
+      // Locked pairs (chatter guard) do not count as changes.
+      for (unsigned int k = 0; k < active.size(); ++k)
+        active[k] = pairs[k].active || pairs[k].locked;
+      const int changed = (active != last_active);
+      last_active       = active;
+      return Utilities::MPI::max(changed, state.comm) != 0;
+    }
+
+    template <int dim>
+    std::string FormingSystem<dim>::iteration_info() const
+    {
+      std::ostringstream s;
+      s << strategy.summary();
+      if (holder_controlled())
+        s << "  holder: w=" << w_accepted
+          << " mm/s, F-F_set=" << -holder.residual() << " N";
+      return s.str();
+    }
+
+#define INSTANTIATE(dim) template class FormingSystem<dim>;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace solver
+} // namespace formsolve

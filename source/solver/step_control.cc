@@ -1,0 +1,32 @@
+#include <formsolve/solver/step_control.h>
+
+#include <algorithm>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    StepControl::StepControl(const parameters::TimeStepping &p)
+        : prm(p)
+        , dt(p.time_step)
+    {}
+
+    bool StepControl::reject()
+    {
+      ++step_cutbacks;
+      const double cut = dt * prm.cutback_factor;
+      // One last try at the minimum itself before giving up.
+      if (dt > prm.minimum_time_step * (1 + 1e-12))
+        dt = std::max(cut, prm.minimum_time_step);
+      else
+        return false;
+      return step_cutbacks <= prm.max_cutbacks;
+    }
+
+    void StepControl::accept(const unsigned int iterations)
+    {
+      if (step_cutbacks == 0 && iterations <= prm.easy_iterations)
+        dt = std::min(dt * prm.growth_factor, prm.time_step);
+    }
+  } // namespace solver
+} // namespace formsolve

@@ -1,0 +1,116 @@
+#include <formsolve/model/dimensions.h>
+#include <formsolve/solver/step_solver.h>
+
+#include <iomanip>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    using namespace dealii;
+
+    template <int dim>
+    StepSolver<dim>::StepSolver(const parameters::Run    &prm,
+                                simulation::State<dim>   &state,
+                                const Assembler<dim>     &assembler,
+                                TimerOutput              &timer,
+                                const ConditionalOStream &log)
+        : prm(prm)
+        , state(state)
+        , strategy(contact::create_penalty_strategy<dim>(prm.contact))
+        , system(prm, state, assembler, *strategy, timer)
+        , newton(prm.nonlinear,
+                 ConditionalOStream(std::cout,
+                                    log.is_active() &&
+                                      prm.nonlinear.log_iterations))
+        , control(prm.time)
+        , log(log)
+    {}
+
+    template <int dim>
+    StepReport StepSolver<dim>::solve(const double max_dt)
+    {
+      StepReport report;
+      control.begin_step();
+      state.update_contact_areas();
+      for (;;)
+        {
+          const double dt = std::min(control.time_step(), max_dt);
+          const simulation::StepSnapshot start = state.snapshot();
+          system.begin_step(dt);
+          // The previous step's velocity is the predictor.
+          state.constraints.distribute(state.velocity);
+          NewtonReport attempt;
+          unsigned int passes = 0;
+          for (;; ++passes)
+            {
+              system.begin_solve();
+              const auto r      = newton.solve(system, state.velocity);
+              attempt.converged = r.converged;
+              attempt.failure   = r.failure;
+              attempt.residual  = r.residual;
+              attempt.iterations += r.iterations;
+              attempt.linear_iterations += r.linear_iterations;
+              attempt.picard_iterations += r.picard_iterations;
+              if (!r.converged)
+                break;
+              state.holder.velocity = system.holder_velocity();
+              // adaptive-strict: solve again while a node is deeper than
+              // delta; augmented-lagrangian: update the multipliers, likewise.
+              if (!strategy->finish_solve(state.contact_set,
+                                          state.tools,
+                                          state.contact_state,
+                                          state.comm) ||
+                  passes >= prm.contact.max_strict_passes)
+                break;
+            }
+          report.iterations += attempt.iterations;
+          report.linear_iterations += attempt.linear_iterations;
+          report.picard_iterations += attempt.picard_iterations;
+          report.residual = attempt.residual;
+          report.max_linear_iterations =
+            std::max(report.max_linear_iterations,
+                     system.max_linear_iterations());
+          report.condition_estimate =
+            std::max(report.condition_estimate, system.condition_estimate());
+          if (attempt.converged)
+            {
+              report.converged = true;
+              report.dt        = dt;
+              report.passes    = passes;
+              report.cutbacks  = control.cutbacks();
+              control.accept(attempt.iterations);
+              return report;
+            }
+          report.failure = attempt.failure + " after " +
+                           std::to_string(attempt.iterations) + " iterations";
+          state.restore(start);
+          const bool retry = control.reject();
+          report.cutbacks  = control.cutbacks();
+          if (!retry)
+            return report;
+          log << "      step " << state.step + 1 << ": " << report.failure
+              << " (|r|/|f| = " << std::scientific << std::setprecision(2)
+              << attempt.residual << std::defaultfloat << ") with dt = " << dt
+              << " s; retrying with dt = " << control.time_step() << " s"
+              << std::endl;
+        }
+    }
+
+    template <int dim>
+    contact::ContactStatistics<dim>
+    StepSolver<dim>::statistics(const double dt) const
+    {
+      return contact::statistics(state.tools,
+                                 state.contact_set,
+                                 system.penalty_factors(),
+                                 prm.contact.regularisation_velocity,
+                                 dt,
+                                 state.comm);
+    }
+
+#define INSTANTIATE(dim) template class StepSolver<dim>;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace solver
+} // namespace formsolve
