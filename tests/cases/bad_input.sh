@@ -49,6 +49,20 @@ expect refinement_layers "Mesh refinement/Punch level" "$base" --set "Mesh refin
 expect refinement_no_criterion "Mesh refinement/Interval" "$base" --set "Mesh refinement/Interval=2"
 expect al_no_passes "Contact/Max strict passes" "$base" --set "Contact/Penalty strategy=augmented-lagrangian" \
   --set "Contact/Max strict passes=0"
+# Process model (issue 8): model, holder control, step control, end of run.
+expect unknown_model "Model" "$base" --set "Geometry/Model=octant"
+expect axisymmetric_rectangle "Geometry/Blank shape" "$base" --set "Geometry/Model=axisymmetric"
+expect axisymmetric_square_punch "Tools/Punch/Shape" "$base" --set "Geometry/Model=axisymmetric" \
+  --set "Geometry/Blank shape=round" --set "Tools/Punch/Shape=rounded rectangle"
+expect revolved_in_3d "Output/Revolved copy" "$base" --set "Output/Revolved copy=true"
+expect zero_holder_force "Tools/Blank holder/Force" "$base" --set "Tools/Blank holder/Enabled=true" \
+  --set "Tools/Blank holder/Force=0"
+expect flat_holder_force "Tools/Blank holder/Control" "$base" --set "Tools/Blank holder/Enabled=true" \
+  --set "Tools/Blank holder/Shape=flat"
+expect minimum_above_step "Time stepping/Minimum time step" "$base" --set "Time stepping/Minimum time step=1"
+expect release_without_holder "Time stepping/End of run" "$base" --set "Time stepping/End of run=holder release"
+expect draw_through_flat_die "Time stepping/End of run" "$base" --set "Time stepping/End of run=draw-through"
+expect nan_thickness "Geometry/Thickness" "$base" --set "Geometry/Thickness=nan"
 touch "$work/a-file"
 expect unwritable_output "Output/Output directory" "$base" --set "Output/Output directory=$work/a-file/results"
 exit $fail
