@@ -9,7 +9,8 @@ packages=(
   gmsh                              # meshing .geo planforms
   numdiff                           # regression comparisons
   python3-vtk9 python3-numpy        # VTU read-back test
-  python3-matplotlib                # benchmark charts
+  python3-matplotlib                # benchmark charts, run report
+  xvfb                              # offscreen X server for the report's VTK pictures
 )
 missing=()
 for p in "${packages[@]}"; do

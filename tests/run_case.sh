@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # run_case.sh FORMSOLVE PRM RANKS OUTDIR PYTHON CHECK [ARGS...]
-# Runs one case into OUTDIR (on RANKS MPI ranks), then the check script.
+# Runs one case into OUTDIR (on RANKS MPI ranks), then the check script. The
+# run report is left out unless FORMSOLVE_REPORT=1 (it takes seconds).
 set -euo pipefail
 exe=$1 prm=$2 ranks=$3 out=$4 python=$5 check=$6
 shift 6
@@ -8,10 +9,14 @@ rm -rf "$out"
 mkdir -p "$(dirname "$out")"
 cd "$(dirname "$prm")"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+report=false
+[ "${FORMSOLVE_REPORT:-0}" = 1 ] && report=true
 if [ "$ranks" -gt 1 ]; then
-  mpirun -np "$ranks" "$exe" "$prm" --set "Output/Output directory=$out" > "$out.log" 2>&1 || { cat "$out.log"; exit 1; }
+  mpirun -np "$ranks" "$exe" "$prm" --set "Output/Output directory=$out" --set "Output/Report=$report" \
+    > "$out.log" 2>&1 || { cat "$out.log"; exit 1; }
 else
-  "$exe" "$prm" --set "Output/Output directory=$out" > "$out.log" 2>&1 || { cat "$out.log"; exit 1; }
+  "$exe" "$prm" --set "Output/Output directory=$out" --set "Output/Report=$report" \
+    > "$out.log" 2>&1 || { cat "$out.log"; exit 1; }
 fi
 grep -E '^step|^done' "$out.log" | tail -3
 case "$check" in

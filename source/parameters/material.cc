@@ -1,11 +1,53 @@
 #include <formsolve/parameters/material.h>
 #include <formsolve/parameters/require.h>
 
+#include <cstdlib>
+#include <sstream>
+
 namespace formsolve
 {
   namespace parameters
   {
     using namespace dealii::Patterns;
+
+    namespace
+    {
+      /// "minor:major, ..." -> pairs; throws naming the entry.
+      std::vector<std::pair<double, double>> parse_table(const std::string &t)
+      {
+        std::vector<std::pair<double, double>> points;
+        std::string                            item;
+        std::istringstream                     in(t);
+        while (std::getline(in, item, ','))
+          {
+            if (item.find_first_not_of(" \t") == std::string::npos)
+              continue;
+            const auto colon = item.find(':');
+            double     a = 0, b = 0;
+            char      *end = nullptr;
+            bool       ok  = colon != std::string::npos;
+            if (ok)
+              {
+                const std::string x = item.substr(0, colon),
+                                  y = item.substr(colon + 1);
+                a                   = std::strtod(x.c_str(), &end);
+                ok                  = end != x.c_str() && std::isfinite(a);
+                b                   = std::strtod(y.c_str(), &end);
+                ok = ok && end != y.c_str() && std::isfinite(b) && b > 0;
+              }
+            require(ok,
+                    "Material/Forming limit table",
+                    "'" + item +
+                      "' is not 'minor:major' with finite true strains and a "
+                      "positive major strain");
+            points.emplace_back(a, b);
+          }
+        require(points.empty() || points.size() >= 2,
+                "Material/Forming limit table",
+                "needs at least two points");
+        return points;
+      }
+    } // namespace
 
     void Material::declare(ParameterHandler &prm)
     {
@@ -48,6 +90,44 @@ namespace formsolve
                         Double(),
                         "alpha (-): the mean stress is sigma_m = alpha K/rate0 "
                         "tr(strain rate), integrated with reduced quadrature.");
+      prm.declare_entry(
+        "Oyane a",
+        "0.020",
+        Double(),
+        "a in Oyane's ductile-fracture integral I = (1/b) int (sigma_m / "
+        "sigma_bar + a) d eps_bar (-); fracture where I reaches 1. Default: "
+        "material B of the reference scene.");
+      prm.declare_entry("Oyane b",
+                        "0.217",
+                        Double(),
+                        "b in Oyane's integral (-), > 0.");
+      prm.declare_entry(
+        "Cockcroft-Latham critical value",
+        "0",
+        Double(0),
+        "C_crit (MPa) of the Cockcroft-Latham criterion C = int max(sigma_1, "
+        "0) d eps_bar / C_crit; 0: not set (the integral itself is still "
+        "written to the VTU files, so that C_crit can be calibrated).");
+      prm.declare_entry(
+        "Fracture criterion",
+        "oyane",
+        Selection("oyane|cockcroft-latham|none"),
+        "The criterion that decides fracture: the punch travel at which it "
+        "first reaches 1 anywhere is the critical stroke.");
+      prm.declare_entry(
+        "Forming limit table",
+        "",
+        Anything(),
+        "The forming limit curve as 'minor:major, minor:major, ...' (true "
+        "strains, minor increasing, at least two points; linear in between, "
+        "constant beyond the ends). Empty: Keeler-Brazier from the hardening "
+        "exponent and the sheet thickness (doc/theory.md, section 11).");
+      prm.declare_entry(
+        "Safety margin",
+        "0.1",
+        Double(0, 1),
+        "Forming limit diagram: a point is marginal when its major strain "
+        "exceeds (1 - this) times the limit at its minor strain (-).");
       prm.leave_subsection();
     }
 
@@ -61,6 +141,15 @@ namespace formsolve
       reference_strain_rate = prm.get_double("Reference strain rate");
       limiting_strain_rate  = prm.get_double("Limiting strain rate");
       volumetric_penalty    = prm.get_double("Volumetric penalty");
+      oyane_a               = prm.get_double("Oyane a");
+      oyane_b               = prm.get_double("Oyane b");
+      cockcroft_latham      = prm.get_double("Cockcroft-Latham critical value");
+      const auto f          = prm.get("Fracture criterion");
+      fracture              = f == "oyane" ? FractureCriterion::oyane
+                              : f == "cockcroft-latham" ? FractureCriterion::cockcroft_latham
+                                                        : FractureCriterion::none;
+      forming_limit_table   = parse_table(prm.get("Forming limit table"));
+      safety_margin         = prm.get_double("Safety margin");
       prm.leave_subsection();
     }
 
@@ -80,6 +169,16 @@ namespace formsolve
                        "Material/Limiting strain rate",
                        "1/s");
       require_positive(volumetric_penalty, "Material/Volumetric penalty", "");
+      require_positive(oyane_b, "Material/Oyane b", "");
+      require(std::isfinite(oyane_a), "Material/Oyane a", "must be finite");
+      require(fracture != FractureCriterion::cockcroft_latham ||
+                cockcroft_latham > 0,
+              "Material/Cockcroft-Latham critical value",
+              "must be set (> 0 MPa) when it decides fracture");
+      for (std::size_t k = 1; k < forming_limit_table.size(); ++k)
+        require(forming_limit_table[k].first > forming_limit_table[k - 1].first,
+                "Material/Forming limit table",
+                "minor strains must increase");
     }
   } // namespace parameters
 } // namespace formsolve

@@ -34,6 +34,20 @@ namespace formsolve
         "Axisymmetric model: with every VTU of the r-z section also write "
         "the section revolved about the z axis as a 3-D mesh "
         "(revolved_<step>.pvtu, revolved.pvd), for pictures of the part.");
+      prm.declare_entry(
+        "Stop at fracture",
+        "false",
+        Bool(),
+        "End the run when the deciding fracture criterion (Material/Fracture "
+        "criterion) first reaches 1; the critical stroke is reported "
+        "either way.");
+      prm.declare_entry(
+        "Report",
+        "true",
+        Bool(),
+        "At the end of the run write report/ (pictures and report.md, "
+        "scripts/formsolve-report); a missing Python module is reported and "
+        "does not fail the run.");
       prm.declare_entry("Revolved angle",
                         "270",
                         Double(1, 360),
@@ -50,6 +64,8 @@ namespace formsolve
       wall_time_in_history = prm.get_bool("Wall time in history");
       revolved_copy        = prm.get_bool("Revolved copy");
       revolved_angle       = prm.get_double("Revolved angle");
+      stop_at_fracture     = prm.get_bool("Stop at fracture");
+      report               = prm.get_bool("Report");
       prm.leave_subsection();
     }
 

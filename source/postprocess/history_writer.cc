@@ -11,6 +11,28 @@ namespace formsolve
 
     namespace
     {
+      /// Names of the coordinates of a location: (r, z) or (x, y, z).
+      template <int dim>
+      std::vector<std::string> coordinates()
+      {
+        return dim == 2 ? std::vector<std::string>{"r", "z"}
+                        : std::vector<std::string>{"x", "y", "z"};
+      }
+
+      /// Suffixes of the draw-in directions.
+      template <int dim>
+      std::vector<std::string> directions()
+      {
+        return dim == 2 ? std::vector<std::string>{""}
+                        : std::vector<std::string>{"_0", "_45", "_90"};
+      }
+
+      const std::vector<std::string> zone_columns = {"columns_safe",
+                                                     "columns_wrinkling",
+                                                     "columns_marginal",
+                                                     "columns_necking",
+                                                     "columns_fracture"};
+
       template <int dim>
       std::vector<std::string> columns(const tools::ToolSet<dim> &tools)
       {
@@ -41,8 +63,24 @@ namespace formsolve
                   "condition_estimate",
                   "dofs",
                   "volume",
-                  "max_equivalent_strain",
-                  "wall_time"});
+                  "max_equivalent_strain"});
+        const auto where = coordinates<dim>();
+        c.insert(c.end(),
+                 {"min_thickness", "min_thickness_R0", "max_thinning_percent"});
+        for (const auto &x : where)
+          c.push_back("min_thickness_" + x);
+        for (const auto &d : directions<dim>())
+          c.insert(c.end(), {"rim_radius" + d, "draw_in" + d});
+        c.push_back("max_oyane");
+        for (const auto &x : where)
+          c.push_back("max_oyane_" + x);
+        c.insert(c.end(),
+                 {"max_cockcroft_latham", "max_cockcroft_latham_integral"});
+        for (const auto &x : where)
+          c.push_back("max_cockcroft_latham_" + x);
+        for (const auto &z : zone_columns)
+          c.push_back(z);
+        c.push_back("wall_time");
         return c;
       }
     } // namespace
@@ -59,6 +97,7 @@ namespace formsolve
                                    const solver::StepReport     &report,
                                    const contact::ContactStatistics<dim> &stats,
                                    const solver::Assembler<dim> &assembler,
+                                   const FormingMeasures<dim>   &forming,
                                    const double                  wall_time)
     {
       const auto        &tools = state.tools;
@@ -100,7 +139,37 @@ namespace formsolve
       table.set("volume",
                 sym * assembler.volume(state.dof_handler, *state.mapping));
       table.set("max_equivalent_strain",
-                assembler.max_strain(state.dof_handler, state.history));
+                assembler
+                  .history_maximum(state.dof_handler,
+                                   *state.mapping,
+                                   state.history,
+                                   &simulation::QuadraturePointHistory::strain)
+                  .value);
+      const auto &sheet = forming.sheet;
+      const auto  where = coordinates<dim>();
+      table.set("min_thickness", sheet.min_thickness);
+      table.set("min_thickness_R0", sheet.min_thickness_radius);
+      table.set("max_thinning_percent", sheet.max_thinning);
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          table.set("min_thickness_" + where[d],
+                    sheet.min_thickness_location[d]);
+          table.set("max_oyane_" + where[d], forming.oyane.location[d]);
+          table.set("max_cockcroft_latham_" + where[d],
+                    forming.cockcroft_latham.location[d]);
+        }
+      const auto dirs = directions<dim>();
+      for (unsigned int i = 0; i < dirs.size(); ++i)
+        {
+          table.set("rim_radius" + dirs[i], sheet.rim_radius[i]);
+          table.set("draw_in" + dirs[i], sheet.draw_in[i]);
+        }
+      table.set("max_oyane", forming.oyane.value);
+      table.set("max_cockcroft_latham", forming.cockcroft_latham_ratio);
+      table.set("max_cockcroft_latham_integral",
+                forming.cockcroft_latham.value);
+      for (unsigned int z = 0; z < zone_columns.size(); ++z)
+        table.set(zone_columns[z], sheet.zone_count[z]);
       table.set("wall_time",
                 state.prm.output.wall_time_in_history ? wall_time : 0.);
       table.write_row();

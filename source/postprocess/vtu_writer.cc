@@ -71,15 +71,20 @@ namespace formsolve
           }
 
         // Cell averages of the quadrature-point history.
-        const auto        &tria    = dof_handler.get_triangulation();
-        const unsigned int n       = tria.n_active_cells();
-        const char        *names[] = {"equivalent_strain",
-                                      "equivalent_strain_rate",
-                                      "flow_stress",
-                                      "mean_stress",
-                                      "thickness_strain",
-                                      "mpi_rank"};
-        cell_data.assign(6, Vector<float>(n));
+        const auto        &tria = dof_handler.get_triangulation();
+        const unsigned int n    = tria.n_active_cells();
+        // The history values in the order of QuadraturePointHistory::
+        // pack_values, then the rank.
+        const std::vector<std::string> names = {"equivalent_strain",
+                                                "equivalent_strain_rate",
+                                                "flow_stress",
+                                                "mean_stress",
+                                                "thickness_strain",
+                                                "oyane",
+                                                "cockcroft_latham_integral",
+                                                "mpi_rank"};
+        const unsigned int             nh    = names.size() - 1;
+        cell_data.assign(names.size(), Vector<float>(n));
         std::vector<double> values;
         for (const auto &cell : tria.active_cell_iterators())
           if (cell->is_locally_owned())
@@ -90,12 +95,13 @@ namespace formsolve
               for (const auto &p : h)
                 {
                   p->pack_values(values);
-                  for (unsigned int k = 0; k < 5; ++k)
+                  Assert(values.size() == nh, ExcInternalError());
+                  for (unsigned int k = 0; k < nh; ++k)
                     cell_data[k][i] += w * values[k];
                 }
-              cell_data[5][i] = tria.locally_owned_subdomain();
+              cell_data[nh][i] = tria.locally_owned_subdomain();
             }
-        for (unsigned int k = 0; k < 6; ++k)
+        for (unsigned int k = 0; k < names.size(); ++k)
           out.add_data_vector(cell_data[k], names[k]);
       }
     } // namespace

@@ -46,7 +46,12 @@ namespace formsolve
       report.strain_before = assembler.strain_integral(state.dof_handler,
                                                        *state.mapping,
                                                        state.history);
-      report.cells_before  = tria.n_global_active_cells();
+      report.damage_before =
+        assembler.history_integral(state.dof_handler,
+                                   *state.mapping,
+                                   state.history,
+                                   &simulation::QuadraturePointHistory::oyane);
+      report.cells_before = tria.n_global_active_cells();
 
       parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
         state.dof_handler);
@@ -85,6 +90,11 @@ namespace formsolve
       report.strain_after = assembler.strain_integral(state.dof_handler,
                                                       *state.mapping,
                                                       state.history);
+      report.damage_after =
+        assembler.history_integral(state.dof_handler,
+                                   *state.mapping,
+                                   state.history,
+                                   &simulation::QuadraturePointHistory::oyane);
       return report;
     }
 

@@ -31,13 +31,16 @@ namespace formsolve
         // run() cannot deadlock in the timer's destructor.
         , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
         , material(run.material)
+        , damage(run.material)
         , state(run, comm)
         , assembler(material,
                     state.kinematics,
                     state.reference_mapping,
-                    run.mesh.degree)
+                    run.mesh.degree,
+                    &damage)
         , step_solver(run, state, assembler, timer, pcout)
         , criteria(run.refinement, state.tools)
+        , sheet(run)
     {}
 
     template <int dim>
@@ -110,6 +113,8 @@ namespace formsolve
       log.set("volume_after", r.volume_after);
       log.set("strain_integral_before", r.strain_before);
       log.set("strain_integral_after", r.strain_after);
+      log.set("damage_integral_before", r.damage_before);
+      log.set("damage_integral_after", r.damage_after);
       log.write_row();
       return true;
     }
@@ -122,9 +127,13 @@ namespace formsolve
       contact_fields.fill(state,
                           step_solver.forming_system().penalty_factors(),
                           prm.contact.search_distance);
+      sheet.measure(state, damage);
+      auto nodal = contact_fields.scalars();
+      for (const auto &f : sheet.nodal_fields(state))
+        nodal.push_back(f);
       postprocess::OutputFields<dim> f{&state.velocity_ghost,
                                        &state.displacement_ghost,
-                                       contact_fields.scalars(),
+                                       nodal,
                                        &state.history};
       writer->write(state.step,
                     state.time,
@@ -215,7 +224,9 @@ namespace formsolve
                                      "volume_before",
                                      "volume_after",
                                      "strain_integral_before",
-                                     "strain_integral_after"},
+                                     "strain_integral_after",
+                                     "damage_integral_before",
+                                     "damage_integral_after"},
             Utilities::MPI::this_mpi_process(comm) == 0);
           // Refine towards the radii before the first step, one level a pass.
           for (unsigned int pass = 0; pass < 8 && adapt(); ++pass)
@@ -230,8 +241,10 @@ namespace formsolve
       RunSummary            summary;
       postprocess::Progress progress;
       progress.record(0., 0.);
-      summary.end_reason  = "the punch stroke was reached";
-      auto        &tools  = state.tools;
+      summary.end_reason           = "the punch stroke was reached";
+      double       deciding        = 0; // deciding damage of the previous step
+      double       deciding_travel = 0;
+      auto        &tools           = state.tools;
       const double stroke = tools.punch_stroke(), speed = tools.punch_speed();
       while (tools.punch_travel() < stroke * (1 - 1e-12))
         {
@@ -277,10 +290,25 @@ namespace formsolve
           summary.n_dofs =
             std::max(summary.n_dofs, double(state.dof_handler.n_dofs()));
           summary.dof_steps += state.dof_handler.n_dofs();
-          const double wall = seconds();
-          history.write(state, report, stats, assembler, wall);
+          const double wall    = seconds();
+          const auto   forming = measure_forming();
+          history.write(state, report, stats, assembler, forming, wall);
 
           const double travel = tools.punch_travel();
+          const double force  = prm.geometry.symmetry_factor() *
+                               stats.tool_force[tools.punch_index()][dim - 1];
+          if (force > summary.peak_punch_force)
+            {
+              summary.peak_punch_force  = force;
+              summary.peak_force_travel = travel;
+            }
+          summary.max_penetration =
+            std::max(summary.max_penetration, stats.max_penetration);
+          const bool fractured =
+            check_fracture(forming, deciding, deciding_travel, summary);
+          deciding        = damage.deciding(forming.oyane.value,
+                                     forming.cockcroft_latham.value);
+          deciding_travel = travel;
           progress.record(wall, travel);
           const double sym = prm.geometry.symmetry_factor();
           pcout << "step " << std::setw(4) << state.step << "  t=" << std::fixed
@@ -302,11 +330,21 @@ namespace formsolve
           if (prm.output.interval > 0 &&
               (state.step % prm.output.interval == 0 || last))
             write_output();
+          if (fractured && prm.output.stop_at_fracture)
+            {
+              std::ostringstream s;
+              s << "fracture predicted at punch travel "
+                << summary.critical_stroke << " mm (Output/Stop at fracture)";
+              summary.end_reason = s.str();
+              break;
+            }
         }
       if (prm.output.interval > 0 && last_output_step != int(state.step))
         write_output();
 
       summary.wall_time = seconds();
+      sheet.measure(state, damage);
+      sheet.write_csv(prm.output.directory);
       write_summary(summary);
       pcout << "done: " << state.step << " steps, " << summary.newton_iterations
             << " Newton iterations, " << summary.cutbacks
@@ -315,35 +353,18 @@ namespace formsolve
             << postprocess::Progress::duration(summary.wall_time) << "; "
             << summary.end_reason << "; results in " << prm.output.directory
             << std::endl;
+      if (damage.criterion() != parameters::FractureCriterion::none)
+        pcout << (summary.critical_stroke >= 0
+                    ? "critical stroke (fracture predicted): " +
+                        std::to_string(summary.critical_stroke) + " mm"
+                    : std::string(
+                        "no fracture predicted up to the end of the run"))
+              << "; minimum thickness " << sheet.summary().min_thickness
+              << " mm (thinning " << sheet.summary().max_thinning << " %)"
+              << std::endl;
       timer.print_summary();
+      make_report();
       return summary;
-    }
-
-    template <int dim>
-    void TimeLoop<dim>::write_summary(RunSummary &summary) const
-    {
-      Utilities::System::MemoryStats m;
-      Utilities::System::get_memory_stats(m);
-      summary.peak_memory_kb = Utilities::MPI::sum(double(m.VmHWM), comm);
-      if (Utilities::MPI::this_mpi_process(comm) != 0)
-        return;
-      // Machine-readable totals for benchmarks (doc/performance.md).
-      std::ofstream f(prm.output.directory + "/run-summary.txt");
-      f << "model = " << model::name(prm.geometry.model)
-        << "\nranks = " << Utilities::MPI::n_mpi_processes(comm)
-        << "\ndofs = " << summary.n_dofs
-        << "\nmean_dofs = " << summary.dof_steps / std::max(1u, summary.steps)
-        << "\ncells = " << state.tria.n_global_active_cells()
-        << "\nsteps = " << summary.steps
-        << "\nnewton_iterations = " << summary.newton_iterations
-        << "\nlinear_iterations = " << summary.linear_iterations
-        << "\ncutbacks = " << summary.cutbacks
-        << "\nwall_time = " << summary.wall_time
-        << "\nnewton_wall_time = " << summary.newton_wall_time
-        << "\npeak_memory_kb_all_ranks = " << summary.peak_memory_kb
-        << "\nfinal_punch_travel = " << state.tools.punch_travel()
-        << "\nholder_release_travel = " << state.holder.release_travel
-        << "\nend_reason = " << summary.end_reason << "\n";
     }
 
 #define INSTANTIATE(dim) template class TimeLoop<dim>;

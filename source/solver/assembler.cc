@@ -4,9 +4,11 @@
 
 #include <formsolve/model/cell_kinematics.h>
 #include <formsolve/model/dimensions.h>
+#include <formsolve/model/position_order.h>
 #include <formsolve/solver/assembler.h>
 
 #include <algorithm>
+#include <limits>
 
 namespace formsolve
 {
@@ -42,11 +44,13 @@ namespace formsolve
     template <int dim>
     Assembler<dim>::Assembler(const material::RigidViscoplastic &material,
                               const model::Kinematics<dim>      &kinematics,
-                              const Mapping<dim> &reference_mapping,
-                              const unsigned int  degree)
+                              const Mapping<dim>             &reference_mapping,
+                              const unsigned int              degree,
+                              const material::DamageCriteria *damage)
         : material(material)
         , kinematics(kinematics)
         , reference_mapping(reference_mapping)
+        , damage(damage)
         , full(degree + 1)
         , reduced(degree)
     {}
@@ -210,6 +214,15 @@ namespace formsolve
             for (unsigned int q = 0; q < kf.n_points(); ++q)
               {
                 const auto r = material.evaluate(D[q], h[q]->strain, dt, false);
+                if (damage)
+                  {
+                    const auto d =
+                      damage->increment(r.deviatoric_stress,
+                                        mean_stress,
+                                        dt * r.equivalent_strain_rate);
+                    h[q]->oyane += d.oyane;
+                    h[q]->cockcroft_latham += d.cockcroft_latham;
+                  }
                 h[q]->strain += dt * r.equivalent_strain_rate;
                 h[q]->strain_rate = r.equivalent_strain_rate;
                 h[q]->flow_stress =
@@ -227,7 +240,8 @@ namespace formsolve
     template <int dim>
     double Assembler<dim>::integrate(const DoFHandler<dim>     &dof_handler,
                                      const Mapping<dim>        &mapping,
-                                     const HistoryStorage<dim> *history) const
+                                     const HistoryStorage<dim> *history,
+                                     const HistoryField         field) const
     {
       CellKinematics<dim> k(kinematics, mapping, dof_handler.get_fe(), full);
       double              sum = 0;
@@ -236,8 +250,8 @@ namespace formsolve
           {
             k.reinit(cell);
             for (unsigned int q = 0; q < k.n_points(); ++q)
-              sum +=
-                (history ? history->get_data(cell)[q]->strain : 1.) * k.dV(q);
+              sum += (history ? history->get_data(cell)[q].get()->*field : 1.) *
+                     k.dV(q);
           }
       return Utilities::MPI::sum(
         sum,
@@ -248,30 +262,65 @@ namespace formsolve
     double Assembler<dim>::volume(const DoFHandler<dim> &dof_handler,
                                   const Mapping<dim>    &mapping) const
     {
-      return integrate(dof_handler, mapping, nullptr);
+      return integrate(dof_handler,
+                       mapping,
+                       nullptr,
+                       &simulation::QuadraturePointHistory::strain);
     }
 
     template <int dim>
-    double
-    Assembler<dim>::strain_integral(const DoFHandler<dim>     &dof_handler,
+    double Assembler<dim>::history_integral(const DoFHandler<dim> &dof_handler,
+                                            const Mapping<dim>    &mapping,
+                                            const HistoryStorage<dim> &history,
+                                            const HistoryField field) const
+    {
+      return integrate(dof_handler, mapping, &history, field);
+    }
+
+    template <int dim>
+    HistoryMaximum<dim>
+    Assembler<dim>::history_maximum(const DoFHandler<dim>     &dof_handler,
                                     const Mapping<dim>        &mapping,
-                                    const HistoryStorage<dim> &history) const
+                                    const HistoryStorage<dim> &history,
+                                    const HistoryField         field) const
     {
-      return integrate(dof_handler, mapping, &history);
-    }
-
-    template <int dim>
-    double Assembler<dim>::max_strain(const DoFHandler<dim>     &dof_handler,
-                                      const HistoryStorage<dim> &history) const
-    {
-      double m = 0;
+      const MPI_Comm comm  = dof_handler.get_triangulation().get_communicator();
+      double         local = -std::numeric_limits<double>::max();
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
-          for (const auto &p : history.get_data(cell))
-            m = std::max(m, p->strain);
-      return Utilities::MPI::max(
-        m,
-        dof_handler.get_triangulation().get_communicator());
+          for (const auto &h : history.get_data(cell))
+            local = std::max(local, h.get()->*field);
+      HistoryMaximum<dim> m;
+      m.value = Utilities::MPI::max(local, comm);
+      // Where: of the points with the largest value (up to round-off, which
+      // differs between partitions), the first in the canonical order.
+      FEValues<dim> fv(mapping,
+                       dof_handler.get_fe(),
+                       full,
+                       update_quadrature_points);
+      bool          found = false;
+      Point<dim>    best;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const auto h      = history.get_data(cell);
+            bool       reinit = true;
+            for (unsigned int q = 0; q < h.size(); ++q)
+              if (model::ties(h[q].get()->*field, m.value))
+                {
+                  if (reinit)
+                    fv.reinit(cell), reinit = false;
+                  if (!found || model::precedes(fv.quadrature_point(q), best))
+                    best = fv.quadrature_point(q), found = true;
+                }
+          }
+      const auto candidates =
+        Utilities::MPI::all_gather(comm, std::make_pair(found, best));
+      found = false;
+      for (const auto &[f, p] : candidates)
+        if (f && (!found || model::precedes(p, m.location)))
+          m.location = p, found = true;
+      return m;
     }
 
     template <int dim>

@@ -1,5 +1,6 @@
 """refinement.csv of an adaptive run: every adaptation keeps the blank volume
-within 0.1 % and the volume integral of equivalent strain within 1 %; the run
+within 0.1 %, the volume integral of equivalent strain within 1 % and that of
+Oyane's damage integral within 0.1 %; the run
 must have refined and coarsened cells after straining started (else the test
 would check nothing)."""
 import csv, os, sys
@@ -11,10 +12,12 @@ for r in rows:
     dv = abs(r["volume_after"] - r["volume_before"]) / r["volume_before"]
     s0, s1 = r["strain_integral_before"], r["strain_integral_after"]
     ds = abs(s1 - s0) / s0 if s0 > 0 else 0.0
+    d0, d1 = r["damage_integral_before"], r["damage_integral_after"]
+    dd = abs(d1 - d0) / abs(d0) if d0 != 0 else 0.0
     grew = r["cells_after"] - r["cells_before"]
     print(f"step {r['step']:3.0f}: cells {r['cells_before']:.0f} -> {r['cells_after']:.0f}, "
-          f"volume change {dv:.2e}, strain integral change {ds:.2e}")
-    ok &= dv <= 1e-3 and ds <= 1e-2
+          f"volume change {dv:.2e}, strain integral change {ds:.2e}, damage integral change {dd:.2e}")
+    ok &= dv <= 1e-3 and ds <= 1e-2 and dd <= 1e-3
     if s0 > 0:
         refined |= r["flagged_refine"] > 0
         # 8 children per refined cell: fewer new cells means families merged.

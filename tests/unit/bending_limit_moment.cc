@@ -116,7 +116,11 @@ namespace
   private:
     static parameters::Material material_parameters()
     {
-      return {sigma0, 0., 0.002, 0., 1., 1e-7, 1e4};
+      parameters::Material m; // perfectly plastic, sigma_0
+      m.strength_coefficient = sigma0;
+      m.hardening_exponent   = 0;
+      m.limiting_strain_rate = 1e-7;
+      return m;
     }
     static parameters::LinearSolver linear_parameters()
     {

@@ -3,11 +3,22 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace formsolve
 {
   namespace parameters
   {
     using dealii::ParameterHandler;
+
+    enum class FractureCriterion
+    {
+      oyane,
+      cockcroft_latham,
+      none
+    };
 
     struct Material
     {
@@ -18,6 +29,17 @@ namespace formsolve
       double reference_strain_rate = 1;     // 1/s
       double limiting_strain_rate  = 1e-4;  // 1/s, rigid-zone cutoff
       double volumetric_penalty    = 1e4;   // alpha (-)
+
+      // Ductile fracture (material B of the reference scene by default).
+      double            oyane_a          = 0.020; // (-)
+      double            oyane_b          = 0.217; // (-)
+      double            cockcroft_latham = 0;     // C_crit (MPa), 0: not set
+      FractureCriterion fracture         = FractureCriterion::oyane;
+
+      // Forming limit curve: Keeler-Brazier from n and t0 unless a table
+      // (minor, major true strains, minor increasing) is given.
+      std::vector<std::pair<double, double>> forming_limit_table;
+      double                                 safety_margin = 0.1; // (-)
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);

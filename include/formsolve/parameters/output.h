@@ -18,6 +18,8 @@ namespace formsolve
       bool         wall_time_in_history = true;
       bool         revolved_copy        = false; // axisymmetric: 3-D VTU too
       double       revolved_angle       = 270;   // degrees swept
+      bool         stop_at_fracture     = false; // end the run at fracture
+      bool         report               = true;  // report/ at the end
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <formsolve/contact/contact_statistics.h>
+#include <formsolve/postprocess/sheet_measures.h>
 #include <formsolve/postprocess/statistics_table.h>
 #include <formsolve/simulation/state.h>
 #include <formsolve/solver/assembler.h>
@@ -12,6 +13,17 @@ namespace formsolve
 {
   namespace postprocess
   {
+    /// What the forming engineer reads from a step: sheet thickness, strains,
+    /// zones, draw-in (SheetMeasures) and the largest damage values.
+    template <int dim>
+    struct FormingMeasures
+    {
+      SheetSummary<dim>           sheet;
+      solver::HistoryMaximum<dim> oyane;            // I (-)
+      solver::HistoryMaximum<dim> cockcroft_latham; // integral W (MPa)
+      double cockcroft_latham_ratio = 0;            // W / C_crit, 0 unset
+    };
+
     template <int dim>
     class HistoryWriter
     {
@@ -25,6 +37,7 @@ namespace formsolve
                  const solver::StepReport              &report,
                  const contact::ContactStatistics<dim> &stats,
                  const solver::Assembler<dim>          &assembler,
+                 const FormingMeasures<dim>            &forming,
                  const double                           wall_time);
 
     private:

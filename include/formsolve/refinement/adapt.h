@@ -19,6 +19,7 @@ namespace formsolve
       unsigned int refine = 0, coarsen = 0; // cells flagged by the criteria
       double       volume_before = 0, volume_after = 0;
       double       strain_before = 0, strain_after = 0; // int eps dV
+      double       damage_before = 0, damage_after = 0; // int I dV (Oyane)
     };
 
     /// Refine and coarsen @p state's mesh by @p criteria. The contact state

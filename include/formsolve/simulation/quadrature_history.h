@@ -18,12 +18,21 @@ namespace formsolve
       double flow_stress = 0; // MPa
       double mean_stress = 0; // MPa
       double thickness_strain =
-        0; // log strain along the through-thickness direction
+        0;              // log strain along the through-thickness direction
+      double oyane = 0; // Oyane's damage integral I (-)
+      double cockcroft_latham =
+        0; // int max(sigma_1, 0) d eps_bar (MPa), not yet / C_crit
 
-      unsigned int number_of_values() const override { return 5; }
+      unsigned int number_of_values() const override { return 7; }
       void         pack_values(std::vector<double> &v) const override
       {
-        v = {strain, strain_rate, flow_stress, mean_stress, thickness_strain};
+        v = {strain,
+             strain_rate,
+             flow_stress,
+             mean_stress,
+             thickness_strain,
+             oyane,
+             cockcroft_latham};
       }
       void unpack_values(const std::vector<double> &v) override
       {
@@ -32,6 +41,8 @@ namespace formsolve
         flow_stress      = v[2];
         mean_stress      = v[3];
         thickness_strain = v[4];
+        oyane            = v[5];
+        cockcroft_latham = v[6];
       }
     };
 

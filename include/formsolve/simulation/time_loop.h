@@ -1,14 +1,19 @@
 // The time loop: set-up and scene checks, then per step: adapt the mesh when
 // due, check the process events (blank-holder release, draw-through), solve
-// the step, advance the state, write history, progress and output.
+// the step, advance the state, measure the forming results (fracture,
+// thickness, strains), write history, progress and output. The forming
+// results and the run's closing files are in time_loop_results.cc.
 #pragma once
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <formsolve/material/damage.h>
 #include <formsolve/material/rigid_viscoplastic.h>
 #include <formsolve/postprocess/contact_fields.h>
+#include <formsolve/postprocess/history_writer.h>
+#include <formsolve/postprocess/sheet_measures.h>
 #include <formsolve/postprocess/statistics_table.h>
 #include <formsolve/postprocess/vtu_writer.h>
 #include <formsolve/refinement/mesh_refinement.h>
@@ -35,7 +40,14 @@ namespace formsolve
       double       n_dofs            = 0; // largest over the run
       double       dof_steps         = 0; // sum over steps of the DoFs
       double       peak_memory_kb    = 0; // peak resident set, all ranks
-      std::string  end_reason;
+      double       peak_punch_force  = 0; // N, full part
+      double       peak_force_travel = 0; // mm
+      double       max_penetration   = 0; // mm, over the run
+      /// Punch travel at which the deciding fracture criterion first reached
+      /// 1 (interpolated between steps), -1 if it did not.
+      double      critical_stroke = -1;
+      std::string fracture_location; // "r z" or "x y z" (mm)
+      std::string end_reason;
     };
 
     template <int dim>
@@ -61,6 +73,16 @@ namespace formsolve
       /// Holder release and draw-through; the reason to end the run, or "".
       std::string check_events();
       void        write_summary(RunSummary &summary) const;
+      /// Thickness, strains, zones, draw-in and damage maxima of the state.
+      postprocess::FormingMeasures<dim> measure_forming();
+      /// Whether the deciding criterion has reached 1 in this step; records
+      /// the critical stroke in @p summary and says so.
+      bool check_fracture(const postprocess::FormingMeasures<dim> &m,
+                          const double                             previous,
+                          const double previous_travel,
+                          RunSummary  &summary);
+      /// report/ by scripts/formsolve-report (rank 0; never fails the run).
+      void make_report() const;
 
       const parameters::Run          &prm;
       const dealii::ParameterHandler &parameter_handler;
@@ -69,6 +91,7 @@ namespace formsolve
       dealii::TimerOutput             timer;
 
       material::RigidViscoplastic                   material;
+      material::DamageCriteria                      damage;
       State<dim>                                    state;
       solver::Assembler<dim>                        assembler;
       solver::StepSolver<dim>                       step_solver;
@@ -76,6 +99,7 @@ namespace formsolve
       std::unique_ptr<postprocess::StatisticsTable> refinement_log;
       std::unique_ptr<postprocess::VtuWriter<dim>>  writer;
       postprocess::ContactFields<dim>               contact_fields;
+      postprocess::SheetMeasures<dim>               sheet;
       int                                           last_output_step = -1;
     };
   } // namespace simulation

@@ -9,6 +9,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <formsolve/material/damage.h>
 #include <formsolve/material/rigid_viscoplastic.h>
 #include <formsolve/model/kinematics.h>
 #include <formsolve/simulation/quadrature_history.h>
@@ -21,16 +22,31 @@ namespace formsolve
     using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
     using simulation::HistoryStorage;
 
+    /// A quantity stored at the quadrature points.
+    using HistoryField = double simulation::QuadraturePointHistory::*;
+
+    /// The largest value of a history field and where it is (current
+    /// configuration), on all ranks.
+    template <int dim>
+    struct HistoryMaximum
+    {
+      double             value = 0;
+      dealii::Point<dim> location;
+    };
+
     template <int dim>
     class Assembler
     {
     public:
       /// @p reference_mapping maps the initial configuration: the volumetric
       /// term drives each cell back to its initial volume (doc/theory.md).
+      /// With @p damage, update_history() also integrates the damage
+      /// criteria.
       Assembler(const material::RigidViscoplastic &material,
                 const model::Kinematics<dim>      &kinematics,
                 const dealii::Mapping<dim>        &reference_mapping,
-                const unsigned int                 degree);
+                const unsigned int                 degree,
+                const material::DamageCriteria    *damage = nullptr);
 
       /// Body residual r = f_int (and the tangent if @p matrix is not null)
       /// at velocity @p v (ghosted), geometry given by @p mapping; matrix and
@@ -46,7 +62,8 @@ namespace formsolve
                            MatrixType                              *matrix,
                            VectorType &residual) const;
 
-      /// After convergence: integrate strain, thickness strain, store stresses.
+      /// After convergence: integrate strain, thickness strain and damage,
+      /// store stresses.
       void update_history(const dealii::DoFHandler<dim> &dof_handler,
                           const dealii::Mapping<dim>    &mapping,
                           const VectorType              &v,
@@ -62,15 +79,30 @@ namespace formsolve
       double volume(const dealii::DoFHandler<dim> &dof_handler,
                     const dealii::Mapping<dim>    &mapping) const;
 
-      /// Volume integral of the equivalent plastic strain (mm^3), current
-      /// configuration: what refinement must carry over.
+      /// Volume integral of a history field (e.g. the equivalent plastic
+      /// strain: mm^3), current configuration: what refinement must carry
+      /// over.
+      double history_integral(const dealii::DoFHandler<dim> &dof_handler,
+                              const dealii::Mapping<dim>    &mapping,
+                              const HistoryStorage<dim>     &history,
+                              const HistoryField             field) const;
       double strain_integral(const dealii::DoFHandler<dim> &dof_handler,
                              const dealii::Mapping<dim>    &mapping,
-                             const HistoryStorage<dim>     &history) const;
+                             const HistoryStorage<dim>     &history) const
+      {
+        return history_integral(dof_handler,
+                                mapping,
+                                history,
+                                &simulation::QuadraturePointHistory::strain);
+      }
 
-      /// Largest equivalent plastic strain at any quadrature point (-).
-      double max_strain(const dealii::DoFHandler<dim> &dof_handler,
-                        const HistoryStorage<dim>     &history) const;
+      /// Largest value of a history field at any quadrature point and its
+      /// position.
+      HistoryMaximum<dim>
+      history_maximum(const dealii::DoFHandler<dim> &dof_handler,
+                      const dealii::Mapping<dim>    &mapping,
+                      const HistoryStorage<dim>     &history,
+                      const HistoryField             field) const;
 
       /// Plastic power int sigma_bar rate dV plus the volumetric term (W = N
       /// mm/s).
@@ -84,14 +116,16 @@ namespace formsolve
 
     private:
       /// int w dV over the locally owned cells, summed over ranks (current
-      /// configuration); w = 1, or the equivalent strain of @p history.
+      /// configuration); w = 1, or @p field of @p history.
       double integrate(const dealii::DoFHandler<dim> &dof_handler,
                        const dealii::Mapping<dim>    &mapping,
-                       const HistoryStorage<dim>     *history) const;
+                       const HistoryStorage<dim>     *history,
+                       const HistoryField             field) const;
 
       const material::RigidViscoplastic &material;
       const model::Kinematics<dim>      &kinematics;
       const dealii::Mapping<dim>        &reference_mapping;
+      const material::DamageCriteria    *damage;
       dealii::QGauss<dim>                full;    // deviatoric part
       dealii::QGauss<dim>                reduced; // volumetric part
     };

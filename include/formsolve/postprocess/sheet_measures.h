@@ -1,0 +1,93 @@
+// What the formed sheet looks like to a forming engineer: nodal thickness
+// measured from the bottom to the top surface along the mid-surface normal,
+// thinning, major and minor true strains of the mid-surface, the forming
+// limit zone, and the flange draw-in (doc/theory.md, section 11).
+//
+// The sheet is a set of node columns through the thickness, identified by
+// their reference planform position (R in axisymmetry, (X, Y) in 3-D). Each
+// rank measures its surface nodes and the cells cut by the reference
+// mid-plane; rank 0 assembles the columns; the results per column go back to
+// all ranks for the VTU fields.
+#pragma once
+
+#include <deal.II/base/point.h>
+
+#include <formsolve/material/damage.h>
+#include <formsolve/material/forming_limit.h>
+#include <formsolve/postprocess/vtu_writer.h>
+#include <formsolve/simulation/state.h>
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace formsolve
+{
+  namespace postprocess
+  {
+    template <int dim>
+    struct SheetColumn
+    {
+      double             reference_radius = 0; // R0 (mm)
+      double             reference_angle  = 0; // degrees from x, 3-D
+      dealii::Point<dim> mid;                  // current mid-surface point
+      double             thickness = 0;        // mm
+      double             major = 0, minor = 0; // true strains of the mid-surface
+      double             damage = 0;           // deciding criterion, column max
+      material::SafetyZone zone = material::SafetyZone::safe;
+      bool               rim   = false;        // on the blank's outer edge
+    };
+
+    template <int dim>
+    struct SheetSummary
+    {
+      double             min_thickness = 0, min_thickness_radius = 0; // mm
+      dealii::Point<dim> min_thickness_location;
+      double             max_thinning = 0; // % of t0
+      double             blank_radius = 0; // largest reference radius
+      /// Rim radius (current, mm) and draw-in R0 - r per direction: 0, 45,
+      /// 90 degrees in 3-D (NaN outside the modelled part), one value in
+      /// axisymmetry.
+      std::vector<double> rim_radius, draw_in;
+      std::array<unsigned int, 5> zone_count{}; // columns per safety zone
+    };
+
+    template <int dim>
+    class SheetMeasures
+    {
+    public:
+      using Key = std::array<long long, dim - 1>;
+
+      SheetMeasures(const parameters::Run &prm);
+
+      /// Measures the sheet of @p state (collective). The summary is valid on
+      /// every rank, the columns on rank 0.
+      void measure(const simulation::State<dim>   &state,
+                   const material::DamageCriteria &damage);
+
+      const SheetSummary<dim>              &summary() const { return sum; }
+      const std::vector<SheetColumn<dim>> &columns() const { return cols; }
+      const material::FormingLimit         &forming_limit() const { return flc; }
+
+      /// Nodal fields thickness, thinning, major_strain, minor_strain,
+      /// safety_zone for the VTU files (collective; valid until the next
+      /// call).
+      std::vector<NodalScalar> nodal_fields(const simulation::State<dim> &state);
+
+      /// sheet.csv (one row per column) and flc.csv (the limit curve), rank 0.
+      void write_csv(const std::string &directory) const;
+
+      /// The planform key of a reference position.
+      static Key key(const dealii::Point<dim> &reference);
+
+    private:
+      double                        t0;
+      material::FormingLimit        flc;
+      SheetSummary<dim>             sum;
+      std::vector<SheetColumn<dim>> cols; // rank 0
+      std::vector<Key>              keys; // of cols
+      std::array<VectorType, 5>     fields;
+    };
+  } // namespace postprocess
+} // namespace formsolve

@@ -1,0 +1,92 @@
+#include <formsolve/material/forming_limit.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace formsolve
+{
+  namespace material
+  {
+    std::string zone_name(const SafetyZone z)
+    {
+      switch (z)
+        {
+          case SafetyZone::safe:
+            return "safe";
+          case SafetyZone::wrinkling:
+            return "wrinkling tendency";
+          case SafetyZone::marginal:
+            return "marginal";
+          case SafetyZone::necking:
+            return "necking";
+          case SafetyZone::fracture:
+            return "fracture";
+        }
+      return "";
+    }
+
+    FormingLimit::FormingLimit(const parameters::Material &p,
+                               const double                thickness)
+        : table(p.forming_limit_table)
+        , margin(p.safety_margin)
+    {
+      if (!table.empty())
+        {
+          origin = "table (Material/Forming limit table)";
+          return;
+        }
+      // Keeler-Brazier: FLC0 in engineering major strain (%) = (23.3 + 14.13
+      // t) n / 0.21, t in mm (stated for t up to about 3 mm and n <= 0.21).
+      const double t = std::min(thickness, 3.);
+      const double n = std::min(p.hardening_exponent, 0.21);
+      flc0_engineering = (23.3 + 14.13 * t) * n / 0.21 / 100.;
+      std::ostringstream s;
+      s << "Keeler-Brazier, n = " << p.hardening_exponent
+        << ", t0 = " << thickness << " mm: FLC0 = " << 100 * flc0_engineering
+        << " % (engineering)";
+      origin = s.str();
+    }
+
+    double FormingLimit::major(const double minor) const
+    {
+      if (!table.empty())
+        {
+          if (minor <= table.front().first)
+            return table.front().second;
+          if (minor >= table.back().first)
+            return table.back().second;
+          const auto hi = std::upper_bound(
+            table.begin(),
+            table.end(),
+            minor,
+            [](const double m, const auto &p) { return m < p.first; });
+          const auto lo = hi - 1;
+          return lo->second + (hi->second - lo->second) * (minor - lo->first) /
+                                (hi->first - lo->first);
+        }
+      const double flc0 = std::log1p(flc0_engineering);
+      if (minor <= 0)
+        return flc0 - minor; // constant thinning in true strains
+      // Slope 0.6 in engineering strains, minor engineering strain <= 20 %.
+      const double e2 = std::min(std::expm1(minor), 0.2);
+      return std::log1p(flc0_engineering + 0.6 * e2);
+    }
+
+    SafetyZone FormingLimit::zone(const double minor,
+                                  const double major_strain,
+                                  const double damage) const
+    {
+      if (damage >= 1)
+        return SafetyZone::fracture;
+      const double limit = major(minor);
+      if (major_strain >= limit)
+        return SafetyZone::necking;
+      if (major_strain >= (1 - margin) * limit)
+        return SafetyZone::marginal;
+      if (minor < 0 && major_strain < -minor)
+        return SafetyZone::wrinkling;
+      return SafetyZone::safe;
+    }
+  } // namespace material
+} // namespace formsolve

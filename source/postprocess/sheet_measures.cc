@@ -1,0 +1,423 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+
+#include <formsolve/model/dimensions.h>
+#include <formsolve/model/position_order.h>
+#include <formsolve/postprocess/sheet_measures.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+namespace formsolve
+{
+  namespace postprocess
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      constexpr double quantum = 1e-7; // mm: planform keys
+      constexpr double nan     = std::numeric_limits<double>::quiet_NaN();
+
+      // Records gathered on rank 0, flat vectors of doubles.
+      // node: key, side (0 bottom, 1 top, 2 rim), current position (dim)
+      // cell: corner keys, corner mid-plane points, major, minor, normal
+      // damage: corner keys, largest deciding damage in the cell
+      template <int dim>
+      constexpr unsigned int corners = dim == 2 ? 2 : 4;
+    } // namespace
+
+    template <int dim>
+    SheetMeasures<dim>::SheetMeasures(const parameters::Run &prm)
+        : t0(prm.geometry.thickness)
+        , flc(prm.material, prm.geometry.thickness)
+    {}
+
+    template <int dim>
+    typename SheetMeasures<dim>::Key
+    SheetMeasures<dim>::key(const Point<dim> &x)
+    {
+      Key k;
+      for (unsigned int d = 0; d + 1 < dim; ++d)
+        k[d] = std::llround(x[d] / quantum);
+      return k;
+    }
+
+    template <int dim>
+    void SheetMeasures<dim>::measure(const simulation::State<dim>   &state,
+                                     const material::DamageCriteria &damage)
+    {
+      constexpr unsigned int nk = dim - 1, nc = corners<dim>;
+      const double           tol = 1e-6 * t0;
+      std::vector<double>    nodes, cells, damages;
+
+      // Surface nodes (top, bottom) and rim nodes between them.
+      for (const auto &node : state.contact_set.nodes)
+        {
+          const Point<dim> &X    = node.reference_position;
+          const double      z    = X[dim - 1];
+          const double      side = z < tol ? 0. : z > t0 - tol ? 1. : 2.;
+          for (const auto k : key(X))
+            nodes.push_back(k);
+          nodes.push_back(side);
+          for (unsigned int d = 0; d < dim; ++d)
+            nodes.push_back(X[d] + state.displacement_ghost[node.dofs[d]]);
+        }
+
+      // Cells: mid-plane strain and normal, and damage per planform cell.
+      const double zm = 0.5 * t0;
+      for (const auto &cell : state.dof_handler.active_cell_iterators())
+        {
+          if (!cell->is_locally_owned())
+            continue;
+          const auto x  = state.mapping->get_vertices(cell);
+          const double zb = cell->vertex(0)[dim - 1];
+          const double zt = cell->vertex(nc)[dim - 1];
+          Assert(zt > zb, ExcInternalError()); // layers along the local last axis
+          double     dmax = 0;
+          for (const auto &h : state.history.get_data(cell))
+            dmax = std::max(dmax, damage.deciding(h->oyane, h->cockcroft_latham));
+          for (unsigned int c = 0; c < nc; ++c)
+            for (const auto k : key(cell->vertex(c)))
+              damages.push_back(k);
+          damages.push_back(dmax);
+          if (!(zb <= zm + tol && zm + tol < zt))
+            continue;
+          const double zeta = (zm - zb) / (zt - zb);
+          std::array<Point<dim>, corners<dim>> m;
+          for (unsigned int c = 0; c < nc; ++c)
+            m[c] = x[c] + zeta * (x[c + nc] - x[c]);
+          double         major, minor;
+          Tensor<1, dim> normal;
+          if constexpr (dim == 2)
+            {
+              // Meridional stretch along the section, hoop stretch r/R.
+              const double R0 = cell->vertex(0)[0], R1 = cell->vertex(1)[0];
+              const Tensor<1, 2> t = m[1] - m[0];
+              const double ls = t.norm() / std::abs(R1 - R0);
+              const double lh = 0.5 * (m[0][0] + m[1][0]) / (0.5 * (R0 + R1));
+              major     = std::log(std::max(ls, lh));
+              minor     = std::log(std::min(ls, lh));
+              normal[0] = -t[1] / t.norm();
+              normal[1] = t[0] / t.norm();
+            }
+          else
+            {
+              // Surface deformation gradient F = G J^-1 at the quad centre.
+              Tensor<1, 3> g1 = 0.5 * ((m[1] - m[0]) + (m[3] - m[2]));
+              Tensor<1, 3> g2 = 0.5 * ((m[2] - m[0]) + (m[3] - m[1]));
+              auto X = [&](const unsigned int v) { return cell->vertex(v); };
+              const double J11 = 0.5 * ((X(1) - X(0))[0] + (X(3) - X(2))[0]);
+              const double J21 = 0.5 * ((X(1) - X(0))[1] + (X(3) - X(2))[1]);
+              const double J12 = 0.5 * ((X(2) - X(0))[0] + (X(3) - X(1))[0]);
+              const double J22 = 0.5 * ((X(2) - X(0))[1] + (X(3) - X(1))[1]);
+              const double det = J11 * J22 - J12 * J21;
+              const Tensor<1, 3> f1 = (J22 * g1 - J21 * g2) / det;
+              const Tensor<1, 3> f2 = (-J12 * g1 + J11 * g2) / det;
+              const double c11 = f1 * f1, c22 = f2 * f2, c12 = f1 * f2;
+              const double mean = 0.5 * (c11 + c22);
+              const double dev  = std::sqrt(0.25 * (c11 - c22) * (c11 - c22) +
+                                           c12 * c12);
+              major  = 0.5 * std::log(mean + dev);
+              minor  = 0.5 * std::log(mean - dev);
+              normal = cross_product_3d(g1, g2);
+              normal /= normal.norm();
+            }
+          for (unsigned int c = 0; c < nc; ++c)
+            {
+              for (const auto k : key(cell->vertex(c)))
+                cells.push_back(k);
+              for (unsigned int d = 0; d < dim; ++d)
+                cells.push_back(m[c][d]);
+            }
+          cells.push_back(major);
+          cells.push_back(minor);
+          for (unsigned int d = 0; d < dim; ++d)
+            cells.push_back(normal[d]);
+        }
+
+      const auto all_nodes   = Utilities::MPI::gather(state.comm, nodes, 0);
+      const auto all_cells   = Utilities::MPI::gather(state.comm, cells, 0);
+      const auto all_damages = Utilities::MPI::gather(state.comm, damages, 0);
+
+      std::vector<double> packed; // the summary, broadcast from rank 0
+      cols.clear();
+      keys.clear();
+      if (Utilities::MPI::this_mpi_process(state.comm) == 0)
+        {
+          struct Column
+          {
+            bool           top = false, bottom = false, rim = false;
+            Point<dim>     x_top, x_bottom, mid;
+            Tensor<1, dim> normal;
+            double         major = 0, minor = 0, damage = 0;
+            unsigned int   n     = 0;
+          };
+          std::map<Key, Column> columns;
+          auto read_key = [&](const std::vector<double> &v, std::size_t &i) {
+            Key k;
+            for (unsigned int d = 0; d < nk; ++d)
+              k[d] = static_cast<long long>(v[i++]);
+            return k;
+          };
+          for (const auto &v : all_nodes)
+            for (std::size_t i = 0; i < v.size();)
+              {
+                auto        &c    = columns[read_key(v, i)];
+                const double side = v[i++];
+                Point<dim>   p;
+                for (unsigned int d = 0; d < dim; ++d)
+                  p[d] = v[i++];
+                if (side == 0.)
+                  c.bottom = true, c.x_bottom = p;
+                else if (side == 1.)
+                  c.top = true, c.x_top = p;
+                else
+                  c.rim = true;
+              }
+          for (const auto &v : all_cells)
+            for (std::size_t i = 0; i < v.size();)
+              {
+                std::array<Key, corners<dim>>        k;
+                std::array<Point<dim>, corners<dim>> p;
+                for (unsigned int c = 0; c < nc; ++c)
+                  {
+                    k[c] = read_key(v, i);
+                    for (unsigned int d = 0; d < dim; ++d)
+                      p[c][d] = v[i++];
+                  }
+                const double   major = v[i++], minor = v[i++];
+                Tensor<1, dim> n;
+                for (unsigned int d = 0; d < dim; ++d)
+                  n[d] = v[i++];
+                for (unsigned int c = 0; c < nc; ++c)
+                  {
+                    auto &col = columns[k[c]];
+                    col.mid += p[c];
+                    col.normal += n;
+                    col.major += major;
+                    col.minor += minor;
+                    ++col.n;
+                  }
+              }
+          for (const auto &v : all_damages)
+            for (std::size_t i = 0; i < v.size();)
+              {
+                std::array<Key, corners<dim>> k;
+                for (unsigned int c = 0; c < nc; ++c)
+                  k[c] = read_key(v, i);
+                const double d = v[i++];
+                for (unsigned int c = 0; c < nc; ++c)
+                  columns[k[c]].damage = std::max(columns[k[c]].damage, d);
+              }
+
+          double r_max = 0;
+          for (const auto &[k, c] : columns)
+            {
+              if (!c.top || !c.bottom)
+                continue;
+              SheetColumn<dim> s;
+              Point<dim>       X;
+              for (unsigned int d = 0; d < nk; ++d)
+                X[d] = k[d] * quantum;
+              s.reference_radius = dim == 2 ? X[0] : std::hypot(X[0], X[1]);
+              s.reference_angle =
+                dim == 2 ? 0. : std::atan2(X[1], X[0]) * 180. / M_PI;
+              const Tensor<1, dim> across = c.x_top - c.x_bottom;
+              if (c.n > 0)
+                {
+                  s.mid       = c.mid / double(c.n);
+                  s.thickness = std::abs(across * (c.normal / c.normal.norm()));
+                  s.major     = c.major / c.n;
+                  s.minor     = c.minor / c.n;
+                }
+              else // no mid-plane cell corner here (e.g. a Q2 mid-edge node)
+                {
+                  s.mid       = c.x_bottom + 0.5 * across;
+                  s.thickness = across.norm();
+                }
+              s.damage = c.damage;
+              s.rim    = c.rim;
+              s.zone   = flc.zone(s.minor, s.major, s.damage);
+              r_max    = std::max(r_max, s.reference_radius);
+              cols.push_back(s);
+              keys.push_back(k);
+            }
+          // Without rim nodes between the surfaces (one layer of Q1), the rim
+          // is where the blank radius is largest.
+          const bool flagged = std::any_of(cols.begin(), cols.end(), [](const auto &c) {
+            return c.rim;
+          });
+          if (!flagged)
+            for (auto &c : cols)
+              c.rim = c.reference_radius > r_max - 1e-6;
+
+          SheetSummary<dim> s;
+          s.blank_radius = r_max;
+          s.min_thickness = std::numeric_limits<double>::max();
+          for (const auto &c : cols)
+            {
+              s.min_thickness = std::min(s.min_thickness, c.thickness);
+              ++s.zone_count[static_cast<int>(c.zone)];
+            }
+          // Where: of the thinnest columns (up to round-off), the first in
+          // the canonical order, so that no partition decides.
+          bool found = false;
+          for (const auto &c : cols)
+            if (model::ties(c.thickness, s.min_thickness) &&
+                (!found || model::precedes(c.mid, s.min_thickness_location)))
+              {
+                s.min_thickness_radius   = c.reference_radius;
+                s.min_thickness_location = c.mid;
+                found                    = true;
+              }
+          s.max_thinning = 100. * (1. - s.min_thickness / t0);
+          std::vector<const SheetColumn<dim> *> rim;
+          for (const auto &c : cols)
+            if (c.rim)
+              rim.push_back(&c);
+          std::sort(rim.begin(), rim.end(), [](const auto *a, const auto *b) {
+            return a->reference_angle < b->reference_angle;
+          });
+          auto radius = [](const SheetColumn<dim> &c) {
+            return dim == 2 ? c.mid[0] : std::hypot(c.mid[0], c.mid[1]);
+          };
+          for (const double phi : (dim == 2 ? std::vector<double>{0.} :
+                                              std::vector<double>{0., 45., 90.}))
+            {
+              double r = nan, R = nan;
+              for (std::size_t i = 0; i < rim.size(); ++i)
+                {
+                  const double a = rim[i]->reference_angle;
+                  if (std::abs(a - phi) < 1e-6)
+                    r = radius(*rim[i]), R = rim[i]->reference_radius;
+                  else if (i + 1 < rim.size() && a < phi &&
+                           rim[i + 1]->reference_angle > phi)
+                    {
+                      const double w =
+                        (phi - a) / (rim[i + 1]->reference_angle - a);
+                      r = (1 - w) * radius(*rim[i]) + w * radius(*rim[i + 1]);
+                      R = (1 - w) * rim[i]->reference_radius +
+                          w * rim[i + 1]->reference_radius;
+                    }
+                }
+              s.rim_radius.push_back(r);
+              s.draw_in.push_back(R - r);
+            }
+          packed = {s.min_thickness, s.min_thickness_radius, s.max_thinning,
+                    s.blank_radius};
+          for (unsigned int d = 0; d < dim; ++d)
+            packed.push_back(s.min_thickness_location[d]);
+          for (const auto n : s.zone_count)
+            packed.push_back(n);
+          packed.insert(packed.end(), s.rim_radius.begin(), s.rim_radius.end());
+          packed.insert(packed.end(), s.draw_in.begin(), s.draw_in.end());
+        }
+      packed = Utilities::MPI::broadcast(state.comm, packed, 0);
+      std::size_t i = 0;
+      sum.min_thickness        = packed[i++];
+      sum.min_thickness_radius = packed[i++];
+      sum.max_thinning         = packed[i++];
+      sum.blank_radius         = packed[i++];
+      for (unsigned int d = 0; d < dim; ++d)
+        sum.min_thickness_location[d] = packed[i++];
+      for (auto &n : sum.zone_count)
+        n = static_cast<unsigned int>(packed[i++]);
+      const std::size_t directions = (packed.size() - i) / 2;
+      sum.rim_radius.assign(packed.begin() + i, packed.begin() + i + directions);
+      sum.draw_in.assign(packed.begin() + i + directions, packed.end());
+    }
+
+    template <int dim>
+    std::vector<NodalScalar>
+    SheetMeasures<dim>::nodal_fields(const simulation::State<dim> &state)
+    {
+      // Columns from rank 0: key, thickness, thinning, major, minor, zone.
+      constexpr unsigned int nk = dim - 1, stride = nk + 5;
+      std::vector<double>    flat;
+      for (std::size_t c = 0; c < cols.size(); ++c)
+        {
+          for (const auto k : keys[c])
+            flat.push_back(k);
+          flat.insert(flat.end(),
+                      {cols[c].thickness,
+                       100. * (1. - cols[c].thickness / t0),
+                       cols[c].major,
+                       cols[c].minor,
+                       double(static_cast<int>(cols[c].zone))});
+        }
+      flat = Utilities::MPI::broadcast(state.comm, flat, 0);
+      std::map<Key, std::size_t> index;
+      for (std::size_t i = 0; i < flat.size(); i += stride)
+        {
+          Key k;
+          for (unsigned int d = 0; d < nk; ++d)
+            k[d] = static_cast<long long>(flat[i + d]);
+          index[k] = i + nk;
+        }
+      std::map<types::global_dof_index, Point<dim>> support;
+      DoFTools::map_dofs_to_support_points(state.reference_mapping,
+                                           state.dof_handler,
+                                           support);
+      std::array<VectorType, 5> owned;
+      for (auto &v : owned)
+        v.reinit(state.owned, state.comm);
+      const auto &fe = state.dof_handler.get_fe();
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : state.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int j = 0; j < dofs.size(); ++j)
+              if (fe.system_to_component_index(j).first == 0 &&
+                  state.owned.is_element(dofs[j]))
+                {
+                  const auto it = index.find(key(support[dofs[j]]));
+                  if (it == index.end())
+                    continue;
+                  for (unsigned int f = 0; f < 5; ++f)
+                    owned[f][dofs[j]] = flat[it->second + f];
+                }
+          }
+      for (unsigned int f = 0; f < 5; ++f)
+        {
+          owned[f].compress(VectorOperation::insert);
+          fields[f].reinit(state.owned, state.relevant, state.comm);
+          fields[f] = owned[f];
+        }
+      return {{"thickness", &fields[0], 0},
+              {"thinning_percent", &fields[1], 0},
+              {"major_strain", &fields[2], 0},
+              {"minor_strain", &fields[3], 0},
+              {"safety_zone", &fields[4], 0}};
+    }
+
+    template <int dim>
+    void SheetMeasures<dim>::write_csv(const std::string &directory) const
+    {
+      if (cols.empty())
+        return; // not rank 0
+      std::ofstream f(directory + "/sheet.csv");
+      f << "reference_radius,reference_angle,r,z,thickness,thinning_percent,"
+           "major_strain,minor_strain,damage,zone,rim\n";
+      f.precision(8);
+      for (const auto &c : cols)
+        f << c.reference_radius << ',' << c.reference_angle << ','
+          << (dim == 2 ? c.mid[0] : std::hypot(c.mid[0], c.mid[1])) << ','
+          << c.mid[dim - 1] << ',' << c.thickness << ','
+          << 100. * (1. - c.thickness / t0) << ',' << c.major << ','
+          << c.minor << ',' << c.damage << ',' << static_cast<int>(c.zone)
+          << ',' << c.rim << '\n';
+      std::ofstream g(directory + "/flc.csv");
+      g << "# " << flc.source() << "\nminor_strain,major_strain\n";
+      for (int i = -60; i <= 60; ++i)
+        g << 0.01 * i << ',' << flc.major(0.01 * i) << '\n';
+    }
+
+#define INSTANTIATE(dim) template class SheetMeasures<dim>;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace postprocess
+} // namespace formsolve

@@ -1,0 +1,170 @@
+// The forming results of the time loop: what is measured every step
+// (thickness, strains, zones, draw-in, damage), the critical stroke, the run
+// summary and the report.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <formsolve/model/dimensions.h>
+#include <formsolve/simulation/time_loop.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace formsolve
+{
+  namespace simulation
+  {
+    using namespace dealii;
+    using Field = simulation::QuadraturePointHistory;
+
+    namespace
+    {
+      template <int dim>
+      std::string where(const Point<dim> &x)
+      {
+        std::ostringstream s;
+        s << (dim == 2 ? "r = " : "x = ") << x[0]
+          << (dim == 2 ? ", z = " : ", y = ") << x[1];
+        if (dim == 3)
+          s << ", z = " << x[dim - 1];
+        s << " mm";
+        return s.str();
+      }
+
+      std::string criterion_name(const parameters::FractureCriterion c)
+      {
+        return c == parameters::FractureCriterion::oyane ?
+                 "Oyane's integral" :
+                 "the Cockcroft-Latham criterion";
+      }
+    } // namespace
+
+    template <int dim>
+    postprocess::FormingMeasures<dim> TimeLoop<dim>::measure_forming()
+    {
+      TimerOutput::Scope                t(timer, "forming results");
+      postprocess::FormingMeasures<dim> m;
+      sheet.measure(state, damage);
+      m.sheet = sheet.summary();
+      m.oyane = assembler.history_maximum(state.dof_handler,
+                                          *state.mapping,
+                                          state.history,
+                                          &Field::oyane);
+      m.cockcroft_latham       = assembler.history_maximum(state.dof_handler,
+                                                     *state.mapping,
+                                                     state.history,
+                                                     &Field::cockcroft_latham);
+      m.cockcroft_latham_ratio = damage.cockcroft_latham(m.cockcroft_latham.value);
+      return m;
+    }
+
+    template <int dim>
+    bool TimeLoop<dim>::check_fracture(const postprocess::FormingMeasures<dim> &m,
+                                       const double previous,
+                                       const double previous_travel,
+                                       RunSummary  &summary)
+    {
+      const auto   criterion = damage.criterion();
+      const double value =
+        damage.deciding(m.oyane.value, m.cockcroft_latham.value);
+      if (criterion == parameters::FractureCriterion::none ||
+          summary.critical_stroke >= 0 || value < 1)
+        return false;
+      // Linear in the punch travel between the two steps.
+      const double travel = state.tools.punch_travel();
+      summary.critical_stroke =
+        previous_travel +
+        (1 - previous) / (value - previous) * (travel - previous_travel);
+      const auto &location = criterion == parameters::FractureCriterion::oyane ?
+                               m.oyane.location :
+                               m.cockcroft_latham.location;
+      std::ostringstream s;
+      for (unsigned int d = 0; d < dim; ++d)
+        s << (d ? " " : "") << location[d];
+      summary.fracture_location = s.str();
+      pcout << "fracture predicted: " << criterion_name(criterion)
+            << " reaches 1 at punch travel " << summary.critical_stroke
+            << " mm, at " << where(location) << std::endl;
+      return true;
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::write_summary(RunSummary &summary) const
+    {
+      Utilities::System::MemoryStats mem;
+      Utilities::System::get_memory_stats(mem);
+      summary.peak_memory_kb = Utilities::MPI::sum(double(mem.VmHWM), comm);
+      if (Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      const auto &sh = sheet.summary();
+      // Machine-readable totals for benchmarks and the report.
+      std::ofstream f(prm.output.directory + "/run-summary.txt");
+      f << "model = " << model::name(prm.geometry.model)
+        << "\nranks = " << Utilities::MPI::n_mpi_processes(comm)
+        << "\ndofs = " << summary.n_dofs << "\nmean_dofs = "
+        << summary.dof_steps / std::max(1u, summary.steps)
+        << "\ncells = " << state.tria.n_global_active_cells()
+        << "\nsteps = " << summary.steps
+        << "\nnewton_iterations = " << summary.newton_iterations
+        << "\nlinear_iterations = " << summary.linear_iterations
+        << "\ncutbacks = " << summary.cutbacks
+        << "\nwall_time = " << summary.wall_time
+        << "\nnewton_wall_time = " << summary.newton_wall_time
+        << "\npeak_memory_kb_all_ranks = " << summary.peak_memory_kb
+        << "\nfinal_punch_travel = " << state.tools.punch_travel()
+        << "\nholder_release_travel = " << state.holder.release_travel
+        << "\npeak_punch_force = " << summary.peak_punch_force
+        << "\npeak_force_travel = " << summary.peak_force_travel
+        << "\nmax_penetration = " << summary.max_penetration
+        << "\nmin_thickness = " << sh.min_thickness
+        << "\nmin_thickness_R0 = " << sh.min_thickness_radius
+        << "\nmax_thinning_percent = " << sh.max_thinning
+        << "\nfracture_criterion = "
+        << (damage.criterion() == parameters::FractureCriterion::oyane ?
+              "oyane" :
+            damage.criterion() == parameters::FractureCriterion::none ?
+              "none" :
+              "cockcroft-latham")
+        << "\ncritical_stroke = " << summary.critical_stroke
+        << "\nfracture_location = " << summary.fracture_location
+        << "\nforming_limit = " << sheet.forming_limit().source()
+        << "\nend_reason = " << summary.end_reason << "\n";
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::make_report() const
+    {
+      if (!prm.output.report || Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      const std::string &dir = prm.output.directory;
+      const std::string  cmd = std::string(FORMSOLVE_PYTHON) + " '" +
+                              FORMSOLVE_REPORT_SCRIPT + "' '" + dir + "' > '" +
+                              dir + "/report.log' 2>&1";
+      if (std::system(cmd.c_str()) == 0)
+        pcout << "report: " << dir << "/report/report.md" << std::endl;
+      else
+        {
+          // The run itself succeeded: say why there is no report, go on.
+          std::ifstream log(dir + "/report.log");
+          std::string   line, last;
+          while (std::getline(log, line))
+            if (!line.empty())
+              last = line;
+          std::cerr << "formsolve: warning: no run report (" << last
+                    << "); see " << dir << "/report.log" << std::endl;
+        }
+    }
+
+    // The class is instantiated in time_loop.cc; these members are defined
+    // here.
+#define INSTANTIATE(dim)                                                     \
+  template postprocess::FormingMeasures<dim> TimeLoop<dim>::measure_forming(); \
+  template bool TimeLoop<dim>::check_fracture(                                \
+    const postprocess::FormingMeasures<dim> &, double, double, RunSummary &); \
+  template void TimeLoop<dim>::write_summary(RunSummary &) const;             \
+  template void TimeLoop<dim>::make_report() const;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace simulation
+} // namespace formsolve
