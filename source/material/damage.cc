@@ -17,14 +17,14 @@ namespace formsolve
     {}
 
     DamageIncrement DamageCriteria::increment(const SymmetricTensor<2, 3> &s,
-                                              const double mean,
+                                              const double                 mean,
                                               const double d_strain) const
     {
       DamageIncrement d;
       const double    equivalent = std::sqrt(1.5 * (s * s));
       if (d_strain <= 0 || equivalent <= 0)
         return d;
-      d.oyane = (mean / equivalent + a) * d_strain / b;
+      d.oyane                     = (mean / equivalent + a) * d_strain / b;
       SymmetricTensor<2, 3> sigma = s;
       for (unsigned int i = 0; i < 3; ++i)
         sigma[i][i] += mean;

@@ -38,8 +38,8 @@ namespace formsolve
         }
       // Keeler-Brazier: FLC0 in engineering major strain (%) = (23.3 + 14.13
       // t) n / 0.21, t in mm (stated for t up to about 3 mm and n <= 0.21).
-      const double t = std::min(thickness, 3.);
-      const double n = std::min(p.hardening_exponent, 0.21);
+      const double t   = std::min(thickness, 3.);
+      const double n   = std::min(p.hardening_exponent, 0.21);
       flc0_engineering = (23.3 + 14.13 * t) * n / 0.21 / 100.;
       std::ostringstream s;
       s << "Keeler-Brazier, n = " << p.hardening_exponent
@@ -56,11 +56,12 @@ namespace formsolve
             return table.front().second;
           if (minor >= table.back().first)
             return table.back().second;
-          const auto hi = std::upper_bound(
-            table.begin(),
-            table.end(),
-            minor,
-            [](const double m, const auto &p) { return m < p.first; });
+          const auto hi = std::upper_bound(table.begin(),
+                                           table.end(),
+                                           minor,
+                                           [](const double m, const auto &p) {
+                                             return m < p.first;
+                                           });
           const auto lo = hi - 1;
           return lo->second + (hi->second - lo->second) * (minor - lo->first) /
                                 (hi->first - lo->first);

@@ -120,6 +120,9 @@ namespace formsolve
               out.patches.push_back(q);
             }
         }
+      DataOutBase::VtkFlags flags;
+      flags.compression_level = DataOutBase::VtkFlags::best_speed;
+      out.set_flags(flags);
       return out.write_vtu_with_pvtu_record(directory + "/",
                                             "revolved",
                                             step,

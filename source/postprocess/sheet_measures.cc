@@ -72,20 +72,22 @@ namespace formsolve
         {
           if (!cell->is_locally_owned())
             continue;
-          const auto x  = state.mapping->get_vertices(cell);
+          const auto   x  = state.mapping->get_vertices(cell);
           const double zb = cell->vertex(0)[dim - 1];
           const double zt = cell->vertex(nc)[dim - 1];
-          Assert(zt > zb, ExcInternalError()); // layers along the local last axis
-          double     dmax = 0;
+          Assert(zt > zb,
+                 ExcInternalError()); // layers along the local last axis
+          double dmax = 0;
           for (const auto &h : state.history.get_data(cell))
-            dmax = std::max(dmax, damage.deciding(h->oyane, h->cockcroft_latham));
+            dmax =
+              std::max(dmax, damage.deciding(h->oyane, h->cockcroft_latham));
           for (unsigned int c = 0; c < nc; ++c)
             for (const auto k : key(cell->vertex(c)))
               damages.push_back(k);
           damages.push_back(dmax);
           if (!(zb <= zm + tol && zm + tol < zt))
             continue;
-          const double zeta = (zm - zb) / (zt - zb);
+          const double                         zeta = (zm - zb) / (zt - zb);
           std::array<Point<dim>, corners<dim>> m;
           for (unsigned int c = 0; c < nc; ++c)
             m[c] = x[c] + zeta * (x[c + nc] - x[c]);
@@ -95,13 +97,13 @@ namespace formsolve
             {
               // Meridional stretch along the section, hoop stretch r/R.
               const double R0 = cell->vertex(0)[0], R1 = cell->vertex(1)[0];
-              const Tensor<1, 2> t = m[1] - m[0];
-              const double ls = t.norm() / std::abs(R1 - R0);
+              const Tensor<1, 2> t  = m[1] - m[0];
+              const double       ls = t.norm() / std::abs(R1 - R0);
               const double lh = 0.5 * (m[0][0] + m[1][0]) / (0.5 * (R0 + R1));
-              major     = std::log(std::max(ls, lh));
-              minor     = std::log(std::min(ls, lh));
-              normal[0] = -t[1] / t.norm();
-              normal[1] = t[0] / t.norm();
+              major           = std::log(std::max(ls, lh));
+              minor           = std::log(std::min(ls, lh));
+              normal[0]       = -t[1] / t.norm();
+              normal[1]       = t[0] / t.norm();
             }
           else
             {
@@ -114,12 +116,12 @@ namespace formsolve
               const double J12 = 0.5 * ((X(2) - X(0))[0] + (X(3) - X(1))[0]);
               const double J22 = 0.5 * ((X(2) - X(0))[1] + (X(3) - X(1))[1]);
               const double det = J11 * J22 - J12 * J21;
-              const Tensor<1, 3> f1 = (J22 * g1 - J21 * g2) / det;
-              const Tensor<1, 3> f2 = (-J12 * g1 + J11 * g2) / det;
-              const double c11 = f1 * f1, c22 = f2 * f2, c12 = f1 * f2;
-              const double mean = 0.5 * (c11 + c22);
-              const double dev  = std::sqrt(0.25 * (c11 - c22) * (c11 - c22) +
-                                           c12 * c12);
+              const Tensor<1, 3> f1  = (J22 * g1 - J21 * g2) / det;
+              const Tensor<1, 3> f2  = (-J12 * g1 + J11 * g2) / det;
+              const double       c11 = f1 * f1, c22 = f2 * f2, c12 = f1 * f2;
+              const double       mean = 0.5 * (c11 + c22);
+              const double       dev =
+                std::sqrt(0.25 * (c11 - c22) * (c11 - c22) + c12 * c12);
               major  = 0.5 * std::log(mean + dev);
               minor  = 0.5 * std::log(mean - dev);
               normal = cross_product_3d(g1, g2);
@@ -153,7 +155,7 @@ namespace formsolve
             Point<dim>     x_top, x_bottom, mid;
             Tensor<1, dim> normal;
             double         major = 0, minor = 0, damage = 0;
-            unsigned int   n     = 0;
+            unsigned int   n = 0;
           };
           std::map<Key, Column> columns;
           auto read_key = [&](const std::vector<double> &v, std::size_t &i) {
@@ -247,15 +249,15 @@ namespace formsolve
             }
           // Without rim nodes between the surfaces (one layer of Q1), the rim
           // is where the blank radius is largest.
-          const bool flagged = std::any_of(cols.begin(), cols.end(), [](const auto &c) {
-            return c.rim;
-          });
+          const bool flagged = std::any_of(cols.begin(),
+                                           cols.end(),
+                                           [](const auto &c) { return c.rim; });
           if (!flagged)
             for (auto &c : cols)
               c.rim = c.reference_radius > r_max - 1e-6;
 
           SheetSummary<dim> s;
-          s.blank_radius = r_max;
+          s.blank_radius  = r_max;
           s.min_thickness = std::numeric_limits<double>::max();
           for (const auto &c : cols)
             {
@@ -284,8 +286,9 @@ namespace formsolve
           auto radius = [](const SheetColumn<dim> &c) {
             return dim == 2 ? c.mid[0] : std::hypot(c.mid[0], c.mid[1]);
           };
-          for (const double phi : (dim == 2 ? std::vector<double>{0.} :
-                                              std::vector<double>{0., 45., 90.}))
+          for (const double phi :
+               (dim == 2 ? std::vector<double>{0.}
+                         : std::vector<double>{0., 45., 90.}))
             {
               double r = nan, R = nan;
               for (std::size_t i = 0; i < rim.size(); ++i)
@@ -306,7 +309,9 @@ namespace formsolve
               s.rim_radius.push_back(r);
               s.draw_in.push_back(R - r);
             }
-          packed = {s.min_thickness, s.min_thickness_radius, s.max_thinning,
+          packed = {s.min_thickness,
+                    s.min_thickness_radius,
+                    s.max_thinning,
                     s.blank_radius};
           for (unsigned int d = 0; d < dim; ++d)
             packed.push_back(s.min_thickness_location[d]);
@@ -315,9 +320,9 @@ namespace formsolve
           packed.insert(packed.end(), s.rim_radius.begin(), s.rim_radius.end());
           packed.insert(packed.end(), s.draw_in.begin(), s.draw_in.end());
         }
-      packed = Utilities::MPI::broadcast(state.comm, packed, 0);
-      std::size_t i = 0;
-      sum.min_thickness        = packed[i++];
+      packed            = Utilities::MPI::broadcast(state.comm, packed, 0);
+      std::size_t i     = 0;
+      sum.min_thickness = packed[i++];
       sum.min_thickness_radius = packed[i++];
       sum.max_thinning         = packed[i++];
       sum.blank_radius         = packed[i++];
@@ -326,7 +331,8 @@ namespace formsolve
       for (auto &n : sum.zone_count)
         n = static_cast<unsigned int>(packed[i++]);
       const std::size_t directions = (packed.size() - i) / 2;
-      sum.rim_radius.assign(packed.begin() + i, packed.begin() + i + directions);
+      sum.rim_radius.assign(packed.begin() + i,
+                            packed.begin() + i + directions);
       sum.draw_in.assign(packed.begin() + i + directions, packed.end());
     }
 
@@ -364,7 +370,7 @@ namespace formsolve
       std::array<VectorType, 5> owned;
       for (auto &v : owned)
         v.reinit(state.owned, state.comm);
-      const auto &fe = state.dof_handler.get_fe();
+      const auto                          &fe = state.dof_handler.get_fe();
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       for (const auto &cell : state.dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -407,9 +413,9 @@ namespace formsolve
         f << c.reference_radius << ',' << c.reference_angle << ','
           << (dim == 2 ? c.mid[0] : std::hypot(c.mid[0], c.mid[1])) << ','
           << c.mid[dim - 1] << ',' << c.thickness << ','
-          << 100. * (1. - c.thickness / t0) << ',' << c.major << ','
-          << c.minor << ',' << c.damage << ',' << static_cast<int>(c.zone)
-          << ',' << c.rim << '\n';
+          << 100. * (1. - c.thickness / t0) << ',' << c.major << ',' << c.minor
+          << ',' << c.damage << ',' << static_cast<int>(c.zone) << ',' << c.rim
+          << '\n';
       std::ofstream g(directory + "/flc.csv");
       g << "# " << flc.source() << "\nminor_strain,major_strain\n";
       for (int i = -60; i <= 60; ++i)

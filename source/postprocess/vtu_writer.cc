@@ -19,6 +19,16 @@ namespace formsolve
 
     namespace
     {
+      /// zlib's fastest level: with the default best compression, output
+      /// took a third of the default cup's run (measured 11.9 s -> 8.3 s),
+      /// for files about a fifth larger.
+      DataOutBase::VtkFlags fast()
+      {
+        DataOutBase::VtkFlags flags;
+        flags.compression_level = DataOutBase::VtkFlags::best_speed;
+        return flags;
+      }
+
       /// One component of a vector-valued nodal field, as a named scalar.
       template <int dim>
       class Component : public DataPostprocessorScalar<dim>
@@ -125,6 +135,7 @@ namespace formsolve
         std::vector<Vector<float>>                   cell_data;
         std::vector<std::unique_ptr<Component<dim>>> scalars;
         add_fields(out, dof_handler, fields, cell_data, scalars);
+        out.set_flags(fast());
         out.build_patches(mapping,
                           dof_handler.get_fe().degree,
                           DataOut<dim>::curved_inner_cells);
@@ -150,6 +161,7 @@ namespace formsolve
             std::vector<Vector<float>>                 cell_data;
             std::vector<std::unique_ptr<Component<2>>> scalars;
             add_fields(out, dof_handler, fields, cell_data, scalars);
+            out.set_flags(fast());
             out.build_patches(mapping, 1, DataOut<2>::no_curved_cells);
             revolved_records.emplace_back(time,
                                           write_revolved(out,

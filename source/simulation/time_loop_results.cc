@@ -34,9 +34,9 @@ namespace formsolve
 
       std::string criterion_name(const parameters::FractureCriterion c)
       {
-        return c == parameters::FractureCriterion::oyane ?
-                 "Oyane's integral" :
-                 "the Cockcroft-Latham criterion";
+        return c == parameters::FractureCriterion::oyane
+                 ? "Oyane's integral"
+                 : "the Cockcroft-Latham criterion";
       }
     } // namespace
 
@@ -46,24 +46,26 @@ namespace formsolve
       TimerOutput::Scope                t(timer, "forming results");
       postprocess::FormingMeasures<dim> m;
       sheet.measure(state, damage);
-      m.sheet = sheet.summary();
-      m.oyane = assembler.history_maximum(state.dof_handler,
+      m.sheet            = sheet.summary();
+      m.oyane            = assembler.history_maximum(state.dof_handler,
                                           *state.mapping,
                                           state.history,
                                           &Field::oyane);
-      m.cockcroft_latham       = assembler.history_maximum(state.dof_handler,
+      m.cockcroft_latham = assembler.history_maximum(state.dof_handler,
                                                      *state.mapping,
                                                      state.history,
                                                      &Field::cockcroft_latham);
-      m.cockcroft_latham_ratio = damage.cockcroft_latham(m.cockcroft_latham.value);
+      m.cockcroft_latham_ratio =
+        damage.cockcroft_latham(m.cockcroft_latham.value);
       return m;
     }
 
     template <int dim>
-    bool TimeLoop<dim>::check_fracture(const postprocess::FormingMeasures<dim> &m,
-                                       const double previous,
-                                       const double previous_travel,
-                                       RunSummary  &summary)
+    bool
+    TimeLoop<dim>::check_fracture(const postprocess::FormingMeasures<dim> &m,
+                                  const double previous,
+                                  const double previous_travel,
+                                  RunSummary  &summary)
     {
       const auto   criterion = damage.criterion();
       const double value =
@@ -72,13 +74,13 @@ namespace formsolve
           summary.critical_stroke >= 0 || value < 1)
         return false;
       // Linear in the punch travel between the two steps.
-      const double travel = state.tools.punch_travel();
-      summary.critical_stroke =
-        previous_travel +
-        (1 - previous) / (value - previous) * (travel - previous_travel);
-      const auto &location = criterion == parameters::FractureCriterion::oyane ?
-                               m.oyane.location :
-                               m.cockcroft_latham.location;
+      const double travel     = state.tools.punch_travel();
+      summary.critical_stroke = previous_travel + (1 - previous) /
+                                                    (value - previous) *
+                                                    (travel - previous_travel);
+      const auto &location = criterion == parameters::FractureCriterion::oyane
+                               ? m.oyane.location
+                               : m.cockcroft_latham.location;
       std::ostringstream s;
       for (unsigned int d = 0; d < dim; ++d)
         s << (d ? " " : "") << location[d];
@@ -102,8 +104,8 @@ namespace formsolve
       std::ofstream f(prm.output.directory + "/run-summary.txt");
       f << "model = " << model::name(prm.geometry.model)
         << "\nranks = " << Utilities::MPI::n_mpi_processes(comm)
-        << "\ndofs = " << summary.n_dofs << "\nmean_dofs = "
-        << summary.dof_steps / std::max(1u, summary.steps)
+        << "\ndofs = " << summary.n_dofs
+        << "\nmean_dofs = " << summary.dof_steps / std::max(1u, summary.steps)
         << "\ncells = " << state.tria.n_global_active_cells()
         << "\nsteps = " << summary.steps
         << "\nnewton_iterations = " << summary.newton_iterations
@@ -121,11 +123,10 @@ namespace formsolve
         << "\nmin_thickness_R0 = " << sh.min_thickness_radius
         << "\nmax_thinning_percent = " << sh.max_thinning
         << "\nfracture_criterion = "
-        << (damage.criterion() == parameters::FractureCriterion::oyane ?
-              "oyane" :
-            damage.criterion() == parameters::FractureCriterion::none ?
-              "none" :
-              "cockcroft-latham")
+        << (damage.criterion() == parameters::FractureCriterion::oyane ? "oyane"
+            : damage.criterion() == parameters::FractureCriterion::none
+              ? "none"
+              : "cockcroft-latham")
         << "\ncritical_stroke = " << summary.critical_stroke
         << "\nfracture_location = " << summary.fracture_location
         << "\nforming_limit = " << sheet.forming_limit().source()
@@ -158,11 +159,14 @@ namespace formsolve
 
     // The class is instantiated in time_loop.cc; these members are defined
     // here.
-#define INSTANTIATE(dim)                                                     \
+#define INSTANTIATE(dim)                                                       \
   template postprocess::FormingMeasures<dim> TimeLoop<dim>::measure_forming(); \
-  template bool TimeLoop<dim>::check_fracture(                                \
-    const postprocess::FormingMeasures<dim> &, double, double, RunSummary &); \
-  template void TimeLoop<dim>::write_summary(RunSummary &) const;             \
+  template bool                              TimeLoop<dim>::check_fracture(    \
+    const postprocess::FormingMeasures<dim> &,    \
+    double,                                       \
+    double,                                       \
+    RunSummary &);                                \
+  template void TimeLoop<dim>::write_summary(RunSummary &) const;              \
   template void TimeLoop<dim>::make_report() const;
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE

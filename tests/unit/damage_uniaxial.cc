@@ -64,7 +64,10 @@ namespace
       bc.close();
       homogeneous.close();
       DynamicSparsityPattern dsp(state.relevant);
-      DoFTools::make_sparsity_pattern(state.dof_handler, dsp, homogeneous, false);
+      DoFTools::make_sparsity_pattern(state.dof_handler,
+                                      dsp,
+                                      homogeneous,
+                                      false);
       SparsityTools::distribute_sparsity_pattern(dsp,
                                                  state.owned,
                                                  state.comm,
@@ -87,7 +90,7 @@ namespace
     double assemble(const VectorType &v, const bool newton) override
     {
       state.velocity_ghost = v;
-      scale = assembler.assemble_body(state.dof_handler,
+      scale                = assembler.assemble_body(state.dof_handler,
                                       *state.mapping,
                                       homogeneous,
                                       state.velocity_ghost,
@@ -114,13 +117,13 @@ namespace
     bool contact_set_changed() override { return false; }
 
   private:
-    simulation::State<3>         &state;
-    const solver::Assembler<3>   &assembler;
-    AffineConstraints<double>     bc, homogeneous;
-    solver::MatrixType            matrix;
-    solver::VectorType            residual;
-    solver::LinearSolver          linear;
-    double                        scale = 0;
+    simulation::State<3>       &state;
+    const solver::Assembler<3> &assembler;
+    AffineConstraints<double>   bc, homogeneous;
+    solver::MatrixType          matrix;
+    solver::VectorType          residual;
+    solver::LinearSolver        linear;
+    double                      scale = 0;
   };
 } // namespace
 
@@ -128,12 +131,12 @@ int main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   parameters::Run                  prm;
-  prm.geometry.model              = model::Model::quarter;
-  prm.geometry.blank_shape        = parameters::BlankShape::rectangle;
-  prm.geometry.blank_length       = 2;
-  prm.geometry.blank_width        = 2;
-  prm.geometry.thickness          = h;
-  prm.mesh                        = {1, 2, 1};
+  prm.geometry.model                = model::Model::quarter;
+  prm.geometry.blank_shape          = parameters::BlankShape::rectangle;
+  prm.geometry.blank_length         = 2;
+  prm.geometry.blank_width          = 2;
+  prm.geometry.thickness            = h;
+  prm.mesh                          = {1, 2, 1};
   prm.material.strength_coefficient = 500;
   prm.material.hardening_exponent   = 0.2;
   prm.material.oyane_a              = 0.1;
@@ -159,9 +162,9 @@ int main(int argc, char **argv)
   for (unsigned int k = 0; k < 6; ++k)
     {
       tension.step();
-      const auto   h0     = state.history.get_data(state.dof_handler.begin_active());
-      const double d_eps  = h0[0]->strain - eps;
-      eps                 = h0[0]->strain;
+      const auto h0 = state.history.get_data(state.dof_handler.begin_active());
+      const double d_eps = h0[0]->strain - eps;
+      eps                = h0[0]->strain;
       W += 500 * std::pow(0.002 + eps, 0.2) * d_eps;
     }
   double worst_oyane = 0, worst_cl = 0, worst_uniform = 0;
@@ -171,11 +174,13 @@ int main(int argc, char **argv)
         {
           const double oyane = (1. / 0.3) * (1. / 3. + 0.1) * p->strain;
           worst_oyane = std::max(worst_oyane, std::abs(p->oyane / oyane - 1));
-          worst_cl    = std::max(worst_cl,
-                              std::abs(damage.cockcroft_latham(p->cockcroft_latham) /
-                                         (W / 300) -
-                                       1));
-          worst_uniform = std::max(worst_uniform, std::abs(p->strain / eps - 1));
+          worst_cl =
+            std::max(worst_cl,
+                     std::abs(damage.cockcroft_latham(p->cockcroft_latham) /
+                                (W / 300) -
+                              1));
+          worst_uniform =
+            std::max(worst_uniform, std::abs(p->strain / eps - 1));
         }
   std::cout << "equivalent strain after 6 steps: " << eps << "\n";
   test::close("homogeneous strain (relative spread)", worst_uniform, 0, 1e-9);

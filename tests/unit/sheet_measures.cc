@@ -17,16 +17,16 @@ using namespace formsolve;
 namespace
 {
   template <int dim>
-  void check(const std::string &name,
-             const model::Model m,
+  void check(const std::string    &name,
+             const model::Model    m,
              const Tensor<1, dim> &log_stretch, // per axis, last = thickness
              const double          major,
              const double          minor)
   {
     parameters::Run prm;
-    prm.geometry.model       = m;
-    prm.geometry.blank_shape = dim == 2 ? parameters::BlankShape::round :
-                                          parameters::BlankShape::rectangle;
+    prm.geometry.model          = m;
+    prm.geometry.blank_shape    = dim == 2 ? parameters::BlankShape::round
+                                           : parameters::BlankShape::rectangle;
     prm.geometry.blank_diameter = 20;
     prm.geometry.blank_length   = 20;
     prm.geometry.blank_width    = 20;
@@ -54,7 +54,8 @@ namespace
           for (unsigned int i = 0; i < dofs.size(); ++i)
             if (state.owned.is_element(dofs[i]))
               {
-                const unsigned int c = state.fe.system_to_component_index(i).first;
+                const unsigned int c =
+                  state.fe.system_to_component_index(i).first;
                 state.displacement[dofs[i]] =
                   (std::exp(log_stretch[c]) - 1) * points[dofs[i]][c];
               }
@@ -65,7 +66,7 @@ namespace
 
     postprocess::SheetMeasures<dim> sheet(prm);
     sheet.measure(state, damage);
-    const double t = std::exp(log_stretch[dim - 1]);
+    const double t       = std::exp(log_stretch[dim - 1]);
     double       worst_t = 0, worst_major = 0, worst_minor = 0;
     for (const auto &c : sheet.columns())
       {
@@ -75,8 +76,14 @@ namespace
       }
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
-        test::close(name + ": columns measured", sheet.columns().size() > 5, 1, 0);
-        test::close(name + ": thickness / t0 exp(eps_3) - 1", worst_t, 0, 1e-12);
+        test::close(name + ": columns measured",
+                    sheet.columns().size() > 5,
+                    1,
+                    0);
+        test::close(name + ": thickness / t0 exp(eps_3) - 1",
+                    worst_t,
+                    0,
+                    1e-12);
         test::close(name + ": major strain", worst_major, 0, 1e-12);
         test::close(name + ": minor strain", worst_minor, 0, 1e-12);
       }
@@ -105,6 +112,10 @@ int main(int argc, char **argv)
   biaxial2[1] = -2 * e;
   check<3>("quarter, plane strain", model::Model::quarter, plane, e, 0);
   check<3>("quarter, equibiaxial", model::Model::quarter, biaxial3, e, e);
-  check<2>("axisymmetric, equibiaxial", model::Model::axisymmetric, biaxial2, e, e);
+  check<2>("axisymmetric, equibiaxial",
+           model::Model::axisymmetric,
+           biaxial2,
+           e,
+           e);
   return test::result();
 }

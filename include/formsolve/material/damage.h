@@ -12,8 +12,8 @@ namespace formsolve
   {
     struct DamageIncrement
     {
-      double oyane             = 0; // dI = (1/b)(sigma_m/sigma_bar + a) d eps
-      double cockcroft_latham  = 0; // dW = max(sigma_1, 0) d eps (MPa)
+      double oyane            = 0; // dI = (1/b)(sigma_m/sigma_bar + a) d eps
+      double cockcroft_latham = 0; // dW = max(sigma_1, 0) d eps (MPa)
     };
 
     class DamageCriteria

@@ -15,11 +15,11 @@ namespace formsolve
     /// Safety zone of a sheet point, ordered by severity.
     enum class SafetyZone : int
     {
-      safe       = 0,
-      wrinkling  = 1, // minor strain compressive and thickening: eps_1 < -eps_2
-      marginal   = 2, // major strain above (1 - margin) FLC
-      necking    = 3, // major strain above the FLC
-      fracture   = 4  // the deciding damage criterion has reached 1
+      safe      = 0,
+      wrinkling = 1, // minor strain compressive and thickening: eps_1 < -eps_2
+      marginal  = 2, // major strain above (1 - margin) FLC
+      necking   = 3, // major strain above the FLC
+      fracture  = 4  // the deciding damage criterion has reached 1
     };
 
     std::string zone_name(const SafetyZone z);
@@ -35,9 +35,8 @@ namespace formsolve
       double major(const double minor) const;
 
       /// Zone of a point with strains (minor, major) and deciding damage.
-      SafetyZone zone(const double minor,
-                      const double major,
-                      const double damage) const;
+      SafetyZone
+      zone(const double minor, const double major, const double damage) const;
 
       /// FLC0 as a true strain, and where the curve comes from.
       double             plane_strain_limit() const { return major(0.); }

@@ -33,10 +33,10 @@ namespace formsolve
       double             reference_angle  = 0; // degrees from x, 3-D
       dealii::Point<dim> mid;                  // current mid-surface point
       double             thickness = 0;        // mm
-      double             major = 0, minor = 0; // true strains of the mid-surface
-      double             damage = 0;           // deciding criterion, column max
+      double major = 0, minor = 0;   // true strains of the mid-surface
+      double damage             = 0; // deciding criterion, column max
       material::SafetyZone zone = material::SafetyZone::safe;
-      bool               rim   = false;        // on the blank's outer edge
+      bool                 rim  = false; // on the blank's outer edge
     };
 
     template <int dim>
@@ -49,7 +49,7 @@ namespace formsolve
       /// Rim radius (current, mm) and draw-in R0 - r per direction: 0, 45,
       /// 90 degrees in 3-D (NaN outside the modelled part), one value in
       /// axisymmetry.
-      std::vector<double> rim_radius, draw_in;
+      std::vector<double>         rim_radius, draw_in;
       std::array<unsigned int, 5> zone_count{}; // columns per safety zone
     };
 
@@ -66,14 +66,15 @@ namespace formsolve
       void measure(const simulation::State<dim>   &state,
                    const material::DamageCriteria &damage);
 
-      const SheetSummary<dim>              &summary() const { return sum; }
+      const SheetSummary<dim>             &summary() const { return sum; }
       const std::vector<SheetColumn<dim>> &columns() const { return cols; }
-      const material::FormingLimit         &forming_limit() const { return flc; }
+      const material::FormingLimit        &forming_limit() const { return flc; }
 
       /// Nodal fields thickness, thinning, major_strain, minor_strain,
       /// safety_zone for the VTU files (collective; valid until the next
       /// call).
-      std::vector<NodalScalar> nodal_fields(const simulation::State<dim> &state);
+      std::vector<NodalScalar>
+      nodal_fields(const simulation::State<dim> &state);
 
       /// sheet.csv (one row per column) and flc.csv (the limit curve), rank 0.
       void write_csv(const std::string &directory) const;
