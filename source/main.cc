@@ -3,6 +3,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <formsolve/app/error_exit.h>
 #include <formsolve/parameters/command_line.h>
 #include <formsolve/parameters/parameters.h>
 #include <formsolve/simulation/time_loop.h>
@@ -12,16 +13,38 @@
 
 namespace
 {
+  /// An exception's message on one line.
+  std::string message(const std::exception &e)
+  {
+    std::ostringstream s;
+    if (const auto *d = dynamic_cast<const dealii::ExceptionBase *>(&e))
+      d->print_info(s);
+    else
+      s << e.what();
+    return formsolve::app::one_line(s.str());
+  }
+
+  /// Errors are handled here, while the simulation objects still exist:
+  /// some of their destructors are collective (MUMPS), and a rank whose
+  /// error the others do not share must not wait in them.
   template <int dim>
-  void run(const formsolve::parameters::Run         &run,
-           const dealii::ParameterHandler           &prm,
-           const formsolve::parameters::CommandLine &cl)
+  int run(const formsolve::parameters::Run         &run,
+          const dealii::ParameterHandler           &prm,
+          const formsolve::parameters::CommandLine &cl)
   {
     formsolve::simulation::TimeLoop<dim> loop(run, prm);
-    if (cl.validate)
-      loop.validate_scene();
-    else
-      loop.run();
+    try
+      {
+        if (cl.validate)
+          loop.validate_scene();
+        else
+          loop.run();
+      }
+    catch (const std::exception &e)
+      {
+        return formsolve::app::error_exit(message(e));
+      }
+    return 0;
   }
 } // namespace
 
@@ -30,6 +53,7 @@ int main(int argc, char **argv)
   using namespace dealii;
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  formsolve::app::prepare_error_exit();
   try
     {
       const auto cl = formsolve::parameters::CommandLine::parse(argc, argv);
@@ -54,31 +78,12 @@ int main(int argc, char **argv)
       formsolve::parameters::Run parameters;
       parameters.parse(prm);
       parameters.validate();
-      if (formsolve::model::space_dimension(parameters.geometry.model) == 2)
-        run<2>(parameters, prm, cl);
-      else
-        run<3>(parameters, prm, cl);
-    }
-  catch (const ExceptionBase &e)
-    {
-      if (root)
-        {
-          std::ostringstream s;
-          e.print_info(s);
-          // One line: deal.II's messages are indented and spread over lines.
-          std::istringstream words(s.str());
-          std::string        msg, word;
-          while (words >> word)
-            msg += (msg.empty() ? "" : " ") + word;
-          std::cerr << "formsolve: error: " << msg << std::endl;
-        }
-      return 1;
+      return formsolve::model::space_dimension(parameters.geometry.model) == 2
+               ? run<2>(parameters, prm, cl)
+               : run<3>(parameters, prm, cl);
     }
   catch (const std::exception &e)
     {
-      if (root)
-        std::cerr << "formsolve: error: " << e.what() << std::endl;
-      return 1;
+      return formsolve::app::error_exit(message(e));
     }
-  return 0;
 }

@@ -1,6 +1,12 @@
 #include <formsolve/parameters/parameters.h>
 #include <formsolve/parameters/require.h>
 
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
 namespace formsolve
 {
   namespace parameters
@@ -32,6 +38,58 @@ namespace formsolve
       linear.parse(prm);
       output.parse(prm);
     }
+
+    namespace
+    {
+      /// Half sizes of a tool's outline along x and y (mm); infinite for
+      /// flat tools.
+      std::array<double, 2> half_sizes(const Tool &t)
+      {
+        if (t.shape == ToolShape::round)
+          return {{0.5 * t.diameter, 0.5 * t.diameter}};
+        if (t.shape == ToolShape::rounded_rectangle)
+          return {{0.5 * t.length, 0.5 * t.width}};
+        const double inf = std::numeric_limits<double>::infinity();
+        return {{inf, inf}};
+      }
+
+      /// MemAvailable of /proc/meminfo (bytes), 0 if unknown.
+      double available_memory()
+      {
+        std::ifstream meminfo("/proc/meminfo");
+        std::string   key, unit;
+        double        kb = 0;
+        while (meminfo >> key >> kb >> unit)
+          if (key == "MemAvailable:")
+            return kb * 1024;
+        return 0;
+      }
+
+      /// Cells of the initial mesh, before it is built (0: unknown, gmsh).
+      double initial_cells(const Geometry &g, const Mesh &m)
+      {
+        if (g.model == model::Model::axisymmetric)
+          return std::ldexp(2., m.refinements) * m.layers;
+        double coarse = 0;
+        if (g.blank_shape == BlankShape::round)
+          coarse = g.model == model::Model::quarter ? 3
+                   : g.model == model::Model::half  ? 4
+                                                    : 5;
+        else if (g.blank_shape == BlankShape::rectangle)
+          {
+            const double lx = model::symmetric_in_x(g.model)
+                                ? 0.5 * g.blank_length
+                                : g.blank_length;
+            const double ly = model::symmetric_in_y(g.model)
+                                ? 0.5 * g.blank_width
+                                : g.blank_width;
+            const double h  = std::min(lx, ly);
+            coarse          = std::max(1., std::round(lx / h)) *
+                     std::max(1., std::round(ly / h));
+          }
+        return coarse * std::ldexp(1., 2 * m.refinements) * m.layers;
+      }
+    } // namespace
 
     void Run::validate() const
     {
@@ -66,6 +124,58 @@ namespace formsolve
               "Time stepping/End of run",
               "'holder release' needs an enabled blank holder with an "
               "opening");
+      // The scene must fit together.
+      const double t0         = geometry.thickness;
+      const auto   punch_half = half_sizes(tools.punch),
+                 die_half     = half_sizes(tools.die),
+                 holder_half  = half_sizes(tools.blank_holder);
+      if (tools.die.enabled && tools.punch.shape != ToolShape::flat &&
+          tools.die.shape != ToolShape::flat)
+        for (unsigned int a = 0; a < 2; ++a)
+          {
+            std::ostringstream what;
+            what << "the clearance between punch and die ("
+                 << die_half[a] - punch_half[a]
+                 << " mm per side) is smaller than the sheet thickness "
+                    "(Geometry/Thickness = "
+                 << t0 << " mm): the punch does not fit into the die "
+                 << "opening (Tools/Die/Diameter) with the sheet";
+            require(die_half[a] - punch_half[a] >= t0,
+                    tools.punch.shape == ToolShape::round
+                      ? "Tools/Punch/Diameter"
+                      : "Tools/Punch/Length",
+                    what.str());
+          }
+      if (tools.blank_holder.enabled &&
+          tools.blank_holder.shape != ToolShape::flat && tools.die.enabled &&
+          tools.die.shape != ToolShape::flat)
+        for (unsigned int a = 0; a < 2; ++a)
+          require(holder_half[a] >= die_half[a],
+                  "Tools/Blank holder/Diameter",
+                  "the holder's opening (" + str(2 * holder_half[a]) +
+                    " mm) lies inside the die opening (Tools/Die/Diameter = " +
+                    str(2 * die_half[a]) +
+                    " mm): it would press the sheet into the die");
+
+      // Refuse meshes the machine cannot hold, before building them: about
+      // 20 kB per DoF with the direct solver (doc/performance.md).
+      const double cells = initial_cells(geometry, mesh);
+      if (cells > 0)
+        {
+          const double dim = model::space_dimension(geometry.model);
+          const double dofs =
+            dim * cells * std::pow(mesh.degree, dim) * (1 + 1. / mesh.layers);
+          const double needed = 20e3 * dofs, available = available_memory();
+          std::ostringstream what;
+          what << "gives about " << cells << " cells and " << dofs
+               << " DoFs, which need about " << needed / 1e9
+               << " GB (20 kB per DoF), more than the " << available / 1e9
+               << " GB available; lower Mesh/Planform refinements or "
+                  "Mesh/Layers through thickness";
+          require(available == 0 || needed < 0.8 * available,
+                  "Mesh/Planform refinements",
+                  what.str());
+        }
       require(time.end_of_run != EndOfRun::draw_through ||
                 (tools.die.enabled && tools.die.shape != ToolShape::flat),
               "Time stepping/End of run",

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <formsolve/app/error_exit.h>
 #include <formsolve/contact/contact_search.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/postprocess/history_writer.h>
@@ -68,6 +69,21 @@ namespace formsolve
             << "against Geometry";
           AssertThrow(worst <= tol, ExcMessage(s.str()));
         }
+      // The holder must act on the flange, and the blank must lie on the die.
+      const unsigned int holder = state.tools.holder_index(),
+                         die    = state.tools.die_index();
+      AssertThrow(holder == state.tools.none ||
+                    state.max_lateral_distance(holder) > 0,
+                  ExcMessage(
+                    "Tools/Blank holder/Diameter: no part of the blank "
+                    "lies under the blank holder (its opening is as "
+                    "large as the blank or larger); it would not act "
+                    "on the flange"));
+      AssertThrow(die == state.tools.none ||
+                    state.max_lateral_distance(die) > 0,
+                  ExcMessage("Tools/Die/Diameter: no part of the blank lies on "
+                             "the die (its opening is as large as the blank or "
+                             "larger)"));
     }
 
     template <int dim>
@@ -256,6 +272,7 @@ namespace formsolve
               summary.end_reason = reason;
               break;
             }
+          app::injected_failure(state.step + 1);
           const double newton_start = seconds();
           const auto   report =
             step_solver.solve((stroke - tools.punch_travel()) / speed);
