@@ -71,6 +71,12 @@ expect minimum_above_step "Time stepping/Minimum time step" "$base" --set "Time 
 expect release_without_holder "Time stepping/End of run" "$base" --set "Time stepping/End of run=holder release"
 expect draw_through_flat_die "Time stepping/End of run" "$base" --set "Time stepping/End of run=draw-through"
 expect nan_thickness "Geometry/Thickness" "$base" --set "Geometry/Thickness=nan"
+# Scenes that do not fit together (issue 12), on the cup.
+cup="$cases/cup-axisymmetric.prm"
+expect punch_wider_than_die "Tools/Punch/Diameter" "$cup" --set "Tools/Punch/Diameter=45"
+expect holder_inside_die "Tools/Blank holder/Diameter" "$cup" --set "Tools/Blank holder/Diameter=40"
+expect holder_beyond_blank "Tools/Blank holder/Diameter" "$cup" --set "Tools/Blank holder/Diameter=90"
+expect mesh_too_large "Mesh/Planform refinements" "$cases/drawing.prm" --set "Mesh/Planform refinements=12"
 touch "$work/a-file"
 expect unwritable_output "Output/Output directory" "$base" --set "Output/Output directory=$work/a-file/results"
 exit $fail
