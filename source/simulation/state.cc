@@ -142,6 +142,23 @@ namespace formsolve
       return Utilities::MPI::max(d, comm);
     }
 
+    template <int dim>
+    double State<dim>::min_distance(const unsigned int t) const
+    {
+      double         d = std::numeric_limits<double>::max();
+      Tensor<1, dim> normal;
+      for (const auto &node : contact_set.nodes)
+        {
+          Point<dim> x = node.reference_position;
+          for (unsigned int c = 0; c < dim; ++c)
+            x[c] += displacement_ghost[node.dofs[c]];
+          const double g = tools[t].signed_distance(x, normal);
+          if (-(normal * node.area_vector) > 0) // the node's surface faces it
+            d = std::min(d, g);
+        }
+      return Utilities::MPI::min(d, comm);
+    }
+
 #define INSTANTIATE(dim) template struct State<dim>;
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE

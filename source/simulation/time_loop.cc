@@ -164,27 +164,39 @@ namespace formsolve
     {
       auto              &tools  = state.tools;
       const unsigned int holder = tools.holder_index();
+      state.update_contact_areas(); // which nodes face the holder
       std::ostringstream travel;
       travel << tools.punch_travel() << " mm";
+      // The holder lets go of the blank when the flange under its face is
+      // narrower than half the sheet thickness (the rim is at its inner
+      // edge: pressing on, its edge would push the rim over the die radius),
+      // or when no sheet node facing it is within reach any more. It stays
+      // where it is.
+      const bool narrow =
+        holder != tools.none && !state.holder.released &&
+        state.max_lateral_distance(holder) <= 0.5 * prm.geometry.thickness;
       if (holder != tools.none && !state.holder.released &&
-          state.max_lateral_distance(holder) <= 0)
+          (narrow || state.min_distance(holder) > prm.contact.search_distance))
         {
-          // The rim has passed the holder's inner edge: it cannot press any
-          // more; it stays where it is.
           state.holder.released       = true;
           state.holder.force_control  = false;
           state.holder.velocity       = 0;
           state.holder.release_travel = tools.punch_travel();
           tools.set_axial_velocity(holder, 0.);
           pcout << "blank holder released at punch travel " << travel.str()
-                << ": the blank rim has left it" << std::endl;
+                << (narrow ? ": the flange under it is narrower than half "
+                             "the sheet thickness"
+                           : ": no sheet within reach of it")
+                << std::endl;
         }
       if (prm.time.end_of_run == parameters::EndOfRun::holder_release &&
           state.holder.released)
-        return "the blank rim left the blank holder at punch travel " +
-               travel.str();
+        return "the blank holder was released at punch travel " + travel.str();
+      // Nodes touching the die wall sit at lateral distance 0 within the
+      // penetration: a tolerance of 1 % of t0 counts them as inside.
       if (prm.time.end_of_run == parameters::EndOfRun::draw_through &&
-          state.max_lateral_distance(tools.die_index()) <= 0)
+          state.max_lateral_distance(tools.die_index()) <=
+            0.01 * prm.geometry.thickness)
         return "drawn through: the whole blank lies inside the die opening "
                "at punch travel " +
                travel.str();

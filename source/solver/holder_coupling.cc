@@ -47,7 +47,10 @@ namespace formsolve
             continue;
           if (!pair.active)
             {
-              if (pair.predicted_gap - pair.shift < gap)
+              // Only a node whose surface faces the holder from below can
+              // take its load: the holder must close on it moving down.
+              if (pair.area > 0 && pair.normal[z] < -0.5 &&
+                  pair.predicted_gap - pair.shift < gap)
                 {
                   gap = pair.predicted_gap - pair.shift;
                   nz  = pair.normal[z];
@@ -106,8 +109,10 @@ namespace formsolve
     {
       if (nearest_gap == std::numeric_limits<double>::max())
         return 0;
-      // predicted gap changes by -n_z dw dt (n_z < 0 under the holder face).
-      return (nearest_gap + depth) / (std::max(-nearest_nz, 0.1) * dt) * -1.;
+      // The predicted gap changes by -n_z dw dt. The candidates lie within the
+      // search distance with n_z < -0.5, so the holder moves at most twice
+      // that distance in the step.
+      return -(nearest_gap + depth) / (-nearest_nz * dt);
     }
 
 #define INSTANTIATE(dim) template class HolderCoupling<dim>;

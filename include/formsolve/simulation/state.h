@@ -76,6 +76,10 @@ namespace formsolve
       /// Largest lateral distance (mm) of any sheet surface node from the
       /// edge of tool @p t's face (positive: on the face's side), all ranks.
       double max_lateral_distance(const unsigned int t) const;
+      /// Smallest signed distance (mm) to tool @p t of the sheet surface
+      /// nodes whose surface faces it (those that can carry its load), all
+      /// ranks.
+      double min_distance(const unsigned int t) const;
 
       const parameters::Run &prm;
       MPI_Comm               comm;
