@@ -53,10 +53,14 @@ namespace formsolve
                                    &simulation::QuadraturePointHistory::oyane);
       report.cells_before = tria.n_global_active_cells();
 
+      // Velocity, displacement and the contact state, as nodal fields:
+      // nodes that persist keep their values, new nodes interpolate them.
       parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
         state.dof_handler);
-      const std::vector<const VectorType *> in = {&state.velocity_ghost,
-                                                  &state.displacement_ghost};
+      const std::vector<VectorType>   fields = state.transferable_fields();
+      std::vector<const VectorType *> in;
+      for (const auto &f : fields)
+        in.push_back(&f);
       transfer.prepare_for_coarsening_and_refinement(in);
       // History: L2 projection onto discontinuous Q_p per cell, which keeps
       // cell integrals when cells are split or merged.
@@ -74,13 +78,14 @@ namespace formsolve
       tria.execute_coarsening_and_refinement();
 
       state.setup_dofs(assembler);
-      std::vector<VectorType *> out = {&state.velocity, &state.displacement};
+      std::vector<VectorType>   transferred(fields.size(),
+                                          VectorType(state.owned, state.comm));
+      std::vector<VectorType *> out;
+      for (auto &f : transferred)
+        out.push_back(&f);
       transfer.interpolate(out);
-      state.constraints.distribute(state.velocity);
-      state.constraints.distribute(state.displacement);
-      state.velocity_ghost     = state.velocity;
-      state.displacement_ghost = state.displacement;
       history_transfer.interpolate();
+      state.set_transferable_fields(transferred);
       state.update_contact_areas();
 
       report.changed      = true;

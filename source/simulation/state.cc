@@ -129,6 +129,62 @@ namespace formsolve
     }
 
     template <int dim>
+    std::vector<VectorType> State<dim>::transferable_fields() const
+    {
+      std::vector<VectorType> fields = {velocity, displacement};
+      for (auto &f : fields)
+        {
+          VectorType ghosted(owned, relevant, comm);
+          ghosted = f;
+          f.swap(ghosted);
+        }
+      // Three records per tool, at the node's first DoF.
+      std::vector<VectorType> records(3 * tools.size(),
+                                      VectorType(owned, comm));
+      for (unsigned int k = 0; k < contact_set.nodes.size(); ++k)
+        for (unsigned int t = 0; t < tools.size(); ++t)
+          {
+            const auto &r           = contact_state(k, t);
+            const auto  dof         = contact_set.nodes[k].dofs[0];
+            records[3 * t][dof]     = r.factor;
+            records[3 * t + 1][dof] = r.scale;
+            records[3 * t + 2][dof] = r.shift;
+          }
+      for (auto &r : records)
+        {
+          r.compress(VectorOperation::insert);
+          VectorType ghosted(owned, relevant, comm);
+          ghosted = r;
+          fields.push_back(ghosted);
+        }
+      return fields;
+    }
+
+    template <int dim>
+    void
+    State<dim>::set_transferable_fields(const std::vector<VectorType> &fields)
+    {
+      Assert(fields.size() == 2 + 3 * tools.size(), ExcInternalError());
+      velocity     = fields[0];
+      displacement = fields[1];
+      constraints.distribute(velocity);
+      constraints.distribute(displacement);
+      velocity_ghost     = velocity;
+      displacement_ghost = displacement;
+      for (unsigned int k = 0; k < contact_set.nodes.size(); ++k)
+        for (unsigned int t = 0; t < tools.size(); ++t)
+          {
+            auto      &r   = contact_state(k, t);
+            const auto dof = contact_set.nodes[k].dofs[0];
+            r.factor       = fields[2 + 3 * t][dof];
+            // A node new to the surface takes its neighbours' mean: a scale
+            // of at least 1, a multiplier of at least 0.
+            r.scale = std::max(1., double(fields[3 + 3 * t][dof]));
+            r.shift = std::max(0., double(fields[4 + 3 * t][dof]));
+          }
+    }
+
+    template <int dim>
     double State<dim>::max_lateral_distance(const unsigned int t) const
     {
       double d = -std::numeric_limits<double>::max();

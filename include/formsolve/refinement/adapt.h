@@ -22,8 +22,8 @@ namespace formsolve
       double       damage_before = 0, damage_after = 0; // int I dV (Oyane)
     };
 
-    /// Refine and coarsen @p state's mesh by @p criteria. The contact state
-    /// starts afresh on the new contact nodes (doc/theory.md, section 7a).
+    /// Refine and coarsen @p state's mesh by @p criteria, carrying the
+    /// state over, contact state included (doc/theory.md, section 7a).
     template <int dim>
     AdaptReport adapt_mesh(simulation::State<dim>        &state,
                            const RefinementCriteria<dim> &criteria,

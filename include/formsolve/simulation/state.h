@@ -20,6 +20,7 @@
 #include <formsolve/tools/tool_set.h>
 
 #include <memory>
+#include <vector>
 
 namespace formsolve
 {
@@ -72,6 +73,15 @@ namespace formsolve
 
       StepSnapshot snapshot() const;
       void         restore(const StepSnapshot &s);
+
+      /// The fields a mesh change or a checkpoint must carry, as ghosted
+      /// nodal vectors: velocity, displacement, and the contact state (last
+      /// factor, strict scale and multiplier per tool, at each contact
+      /// node's first DoF).
+      std::vector<VectorType> transferable_fields() const;
+      /// Takes the fields of transferable_fields() (locally owned vectors on
+      /// the current mesh, after setup_dofs()) back.
+      void set_transferable_fields(const std::vector<VectorType> &fields);
 
       /// Largest lateral distance (mm) of any sheet surface node from the
       /// edge of tool @p t's face (positive: on the face's side), all ranks.
