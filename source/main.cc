@@ -38,7 +38,7 @@ namespace
         if (cl.validate)
           loop.validate_scene();
         else
-          loop.run();
+          loop.run(cl.resume);
       }
     catch (const std::exception &e)
       {

@@ -3,6 +3,7 @@
 #include <formsolve/app/error_exit.h>
 
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
@@ -78,6 +79,13 @@ namespace formsolve
                   dealii::ExcMessage(
                     "injected failure (FORMSOLVE_FAIL_ON_RANK=" +
                     std::string(r) + ", FORMSOLVE_FAIL_AT_STEP=" + s + ")"));
+    }
+
+    void injected_kill(const std::string &point, const unsigned int step)
+    {
+      const char *k = std::getenv("FORMSOLVE_KILL_AT");
+      if (k != nullptr && std::string(k) == point + ":" + std::to_string(step))
+        std::raise(SIGKILL);
     }
   } // namespace app
 } // namespace formsolve

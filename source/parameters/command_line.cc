@@ -26,6 +26,10 @@ namespace formsolve
              "mesh, initial\n"
              "                               position of the tools) and stop; "
              "writes nothing\n"
+             "  --resume                     continue from the checkpoint in "
+             "the "
+             "output folder\n"
+             "                               (Output/Checkpoint interval)\n"
              "  --set \"Subsection/Entry=value\"\n"
              "                               override one entry after reading "
              "the file\n"
@@ -45,6 +49,8 @@ namespace formsolve
             cl.print_parameters = true;
           else if (a == "--validate")
             cl.validate = true;
+          else if (a == "--resume")
+            cl.resume = true;
           else if (a == "--set" || a.rfind("--set=", 0) == 0)
             {
               std::string s;

@@ -48,6 +48,14 @@ namespace formsolve
         "At the end of the run write report/ (pictures and report.md, "
         "scripts/formsolve-report); a missing Python module is reported and "
         "does not fail the run.");
+      prm.declare_entry(
+        "Checkpoint interval",
+        "0",
+        Integer(0),
+        "Write a checkpoint every this many steps (steps) into "
+        "<Output directory>/checkpoint, and always when the run ends or "
+        "stops; 'formsolve case.prm --resume' continues from it. 0: only "
+        "at the end.");
       prm.declare_entry("Revolved angle",
                         "270",
                         Double(1, 360),
@@ -66,6 +74,7 @@ namespace formsolve
       revolved_angle       = prm.get_double("Revolved angle");
       stop_at_fracture     = prm.get_bool("Stop at fracture");
       report               = prm.get_bool("Report");
+      checkpoint_interval  = prm.get_integer("Checkpoint interval");
       prm.leave_subsection();
     }
 

@@ -86,10 +86,12 @@ namespace formsolve
     } // namespace
 
     template <int dim>
-    HistoryWriter<dim>::HistoryWriter(const simulation::State<dim> &state)
+    HistoryWriter<dim>::HistoryWriter(const simulation::State<dim> &state,
+                                      const int                     keep_rows)
         : table(state.prm.output.directory + "/history.csv",
                 columns(state.tools),
-                Utilities::MPI::this_mpi_process(state.comm) == 0)
+                Utilities::MPI::this_mpi_process(state.comm) == 0,
+                keep_rows)
     {}
 
     template <int dim>

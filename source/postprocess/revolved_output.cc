@@ -1,5 +1,6 @@
 #include <deal.II/base/data_out_base.h>
 
+#include <formsolve/postprocess/atomic_output.h>
 #include <formsolve/postprocess/revolved_output.h>
 
 #include <cmath>
@@ -123,12 +124,7 @@ namespace formsolve
       DataOutBase::VtkFlags flags;
       flags.compression_level = DataOutBase::VtkFlags::best_speed;
       out.set_flags(flags);
-      return out.write_vtu_with_pvtu_record(directory + "/",
-                                            "revolved",
-                                            step,
-                                            comm,
-                                            5,
-                                            0);
+      return write_vtu_atomically(out, directory, "revolved", step, comm);
     }
   } // namespace postprocess
 } // namespace formsolve

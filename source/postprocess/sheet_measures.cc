@@ -3,12 +3,14 @@
 
 #include <formsolve/model/dimensions.h>
 #include <formsolve/model/position_order.h>
+#include <formsolve/postprocess/atomic_output.h>
 #include <formsolve/postprocess/sheet_measures.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <sstream>
 
 namespace formsolve
 {
@@ -405,7 +407,7 @@ namespace formsolve
     {
       if (cols.empty())
         return; // not rank 0
-      std::ofstream f(directory + "/sheet.csv");
+      std::ostringstream f;
       f << "reference_radius,reference_angle,r,z,thickness,thinning_percent,"
            "major_strain,minor_strain,damage,zone,rim\n";
       f.precision(8);
@@ -416,10 +418,14 @@ namespace formsolve
           << 100. * (1. - c.thickness / t0) << ',' << c.major << ',' << c.minor
           << ',' << c.damage << ',' << static_cast<int>(c.zone) << ',' << c.rim
           << '\n';
-      std::ofstream g(directory + "/flc.csv");
+      std::ostringstream g;
       g << "# " << flc.source() << "\nminor_strain,major_strain\n";
       for (int i = -60; i <= 60; ++i)
         g << 0.01 * i << ',' << flc.major(0.01 * i) << '\n';
+      write_atomically(directory + "/sheet.csv",
+                       [&](std::ostream &o) { o << f.str(); });
+      write_atomically(directory + "/flc.csv",
+                       [&](std::ostream &o) { o << g.str(); });
     }
 
 #define INSTANTIATE(dim) template class SheetMeasures<dim>;

@@ -5,6 +5,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <formsolve/model/dimensions.h>
+#include <formsolve/postprocess/atomic_output.h>
 #include <formsolve/postprocess/revolved_output.h>
 #include <formsolve/postprocess/vtu_writer.h>
 
@@ -139,17 +140,15 @@ namespace formsolve
         out.build_patches(mapping,
                           dof_handler.get_fe().degree,
                           DataOut<dim>::curved_inner_cells);
-        records.emplace_back(time,
-                             out.write_vtu_with_pvtu_record(prm.directory + "/",
-                                                            "solution",
-                                                            step,
-                                                            comm,
-                                                            5,
-                                                            0));
+        records.emplace_back(
+          time,
+          write_vtu_atomically(out, prm.directory, "solution", step, comm));
         if (root)
           {
-            std::ofstream pvd(prm.directory + "/solution.pvd");
-            DataOutBase::write_pvd_record(pvd, records);
+            write_atomically(prm.directory + "/solution.pvd",
+                             [&](std::ostream &f) {
+                               DataOutBase::write_pvd_record(f, records);
+                             });
           }
       }
       if constexpr (dim == 2)
@@ -171,8 +170,11 @@ namespace formsolve
                                                          comm));
             if (root)
               {
-                std::ofstream pvd(prm.directory + "/revolved.pvd");
-                DataOutBase::write_pvd_record(pvd, revolved_records);
+                write_atomically(
+                  prm.directory + "/revolved.pvd",
+                  [&](std::ostream &f) {
+                    DataOutBase::write_pvd_record(f, revolved_records);
+                  });
               }
           }
     }

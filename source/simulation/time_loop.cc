@@ -215,17 +215,32 @@ namespace formsolve
     }
 
     template <int dim>
-    RunSummary TimeLoop<dim>::run()
+    RunSummary TimeLoop<dim>::run(const bool resume)
     {
-      using Clock        = std::chrono::steady_clock;
-      const auto start   = Clock::now();
-      auto       seconds = [&]() {
-        return std::chrono::duration<double>(Clock::now() - start).count();
+      using Clock      = std::chrono::steady_clock;
+      const auto start = Clock::now();
+      RunSummary summary;
+      // Wall time includes that of the run before a resume.
+      auto seconds = [&]() {
+        return summary.wall_before +
+               std::chrono::duration<double>(Clock::now() - start).count();
       };
 
-      state.create_mesh(assembler);
-      step_solver.reinit();
-      check_initial_scene();
+      const Checkpoint<dim> checkpoint(prm.output.directory,
+                                       parameter_listing());
+      writer = std::make_unique<postprocess::VtuWriter<dim>>(prm.output);
+      if (resume)
+        {
+          const auto meta = checkpoint.load(state, assembler);
+          step_solver.reinit();
+          restore_loop(meta, summary);
+        }
+      else
+        {
+          state.create_mesh(assembler);
+          step_solver.reinit();
+          check_initial_scene();
+        }
       prepare_output_directory();
 
       pcout << "formsolve: " << model::name(prm.geometry.model) << " model, "
@@ -235,9 +250,13 @@ namespace formsolve
             << ", " << prm.mesh.layers << " layers), contact "
             << step_solver.strategy_name() << ", forces scaled by "
             << prm.geometry.symmetry_factor() << " to the full part\n";
+      if (resume)
+        pcout << "resumed from the checkpoint at step " << state.step
+              << ", punch travel " << state.tools.punch_travel() << " mm"
+              << std::endl;
 
-      postprocess::HistoryWriter<dim> history(state);
-      writer = std::make_unique<postprocess::VtuWriter<dim>>(prm.output);
+      postprocess::HistoryWriter<dim> history(state,
+                                              resume ? int(state.step) : -1);
       if (prm.refinement.enabled())
         {
           refinement_log = std::make_unique<postprocess::StatisticsTable>(
@@ -255,24 +274,31 @@ namespace formsolve
                                      "strain_integral_after",
                                      "damage_integral_before",
                                      "damage_integral_after"},
-            Utilities::MPI::this_mpi_process(comm) == 0);
+            Utilities::MPI::this_mpi_process(comm) == 0,
+            resume ? int(refinement_rows) : -1);
           // Refine towards the radii before the first step, one level a pass.
-          for (unsigned int pass = 0; pass < 8 && adapt(); ++pass)
-            {}
-          pcout << "adapted mesh: " << state.tria.n_global_active_cells()
-                << " cells, " << state.dof_handler.n_dofs() << " DoFs"
-                << std::endl;
+          if (!resume)
+            {
+              for (unsigned int pass = 0; pass < 8 && adapt(); ++pass)
+                {}
+              pcout << "adapted mesh: " << state.tria.n_global_active_cells()
+                    << " cells, " << state.dof_handler.n_dofs() << " DoFs"
+                    << std::endl;
+            }
         }
-      if (prm.output.interval > 0)
+      if (!resume && prm.output.interval > 0)
         write_output();
 
-      RunSummary            summary;
+      auto save_checkpoint = [&]() {
+        TimerOutput::Scope t(timer, "checkpoint");
+        summary.wall_time = seconds();
+        checkpoint.save(state, loop_metadata(summary));
+      };
+
       postprocess::Progress progress;
-      progress.record(0., 0.);
-      summary.end_reason           = "the punch stroke was reached";
-      double       deciding        = 0; // deciding damage of the previous step
-      double       deciding_travel = 0;
-      auto        &tools           = state.tools;
+      progress.record(seconds(), state.tools.punch_travel());
+      summary.end_reason  = "the punch stroke was reached";
+      auto        &tools  = state.tools;
       const double stroke = tools.punch_stroke(), speed = tools.punch_speed();
       while (tools.punch_travel() < stroke * (1 - 1e-12))
         {
@@ -285,6 +311,7 @@ namespace formsolve
               break;
             }
           app::injected_failure(state.step + 1);
+          app::injected_kill("step", state.step + 1);
           const double newton_start = seconds();
           const auto   report =
             step_solver.solve((stroke - tools.punch_travel()) / speed);
@@ -294,9 +321,11 @@ namespace formsolve
           summary.cutbacks += report.cutbacks;
           if (!report.converged)
             {
+              // The state is that of the last converged step again.
               if (prm.output.interval > 0 &&
                   last_output_step != int(state.step))
                 write_output();
+              save_checkpoint();
               std::ostringstream s;
               s << "step " << state.step + 1 << " (punch travel "
                 << tools.punch_travel() << " mm): " << report.failure
@@ -305,7 +334,8 @@ namespace formsolve
                 << " time-step cut(s), at the minimum time step "
                    "(Time stepping/Minimum time step = "
                 << prm.time.minimum_time_step
-                << " s); results up to the previous step are in "
+                << " s); results up to the previous step and a checkpoint "
+                   "are in "
                 << prm.output.directory;
               AssertThrow(false, ExcMessage(s.str()));
             }
@@ -333,17 +363,17 @@ namespace formsolve
             }
           summary.max_penetration =
             std::max(summary.max_penetration, stats.max_penetration);
-          const bool fractured =
-            check_fracture(forming, deciding, deciding_travel, summary);
-          deciding        = damage.deciding(forming.oyane.value,
-                                     forming.cockcroft_latham.value);
-          deciding_travel = travel;
+          const bool fractured       = check_fracture(forming,
+                                                summary.last_damage,
+                                                summary.last_damage_travel,
+                                                summary);
+          summary.last_damage        = damage.deciding(forming.oyane.value,
+                                                forming.cockcroft_latham.value);
+          summary.last_damage_travel = travel;
           progress.record(wall, travel);
-          const double sym = prm.geometry.symmetry_factor();
           pcout << "step " << std::setw(4) << state.step << "  t=" << std::fixed
                 << std::setprecision(3) << state.time << " s  travel=" << travel
-                << " mm  F=" << std::setprecision(2)
-                << sym * stats.tool_force[tools.punch_index()][dim - 1] / 1000.
+                << " mm  F=" << std::setprecision(2) << force / 1000.
                 << " kN  newton=" << std::setw(2) << report.iterations
                 << (report.cutbacks > 0
                       ? "  cut=" + std::to_string(report.cutbacks)
@@ -359,6 +389,9 @@ namespace formsolve
           if (prm.output.interval > 0 &&
               (state.step % prm.output.interval == 0 || last))
             write_output();
+          if (prm.output.checkpoint_interval > 0 && !last &&
+              state.step % prm.output.checkpoint_interval == 0)
+            save_checkpoint();
           if (fractured && prm.output.stop_at_fracture)
             {
               std::ostringstream s;
@@ -370,6 +403,7 @@ namespace formsolve
         }
       if (prm.output.interval > 0 && last_output_step != int(state.step))
         write_output();
+      save_checkpoint();
 
       summary.wall_time = seconds();
       sheet.measure(state, damage);

@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <formsolve/model/dimensions.h>
+#include <formsolve/postprocess/atomic_output.h>
 #include <formsolve/simulation/time_loop.h>
 
 #include <cstdlib>
@@ -101,7 +102,7 @@ namespace formsolve
         return;
       const auto &sh = sheet.summary();
       // Machine-readable totals for benchmarks and the report.
-      std::ofstream f(prm.output.directory + "/run-summary.txt");
+      std::ostringstream f;
       f << "model = " << model::name(prm.geometry.model)
         << "\nranks = " << Utilities::MPI::n_mpi_processes(comm)
         << "\ndofs = " << summary.n_dofs
@@ -131,6 +132,8 @@ namespace formsolve
         << "\nfracture_location = " << summary.fracture_location
         << "\nforming_limit = " << sheet.forming_limit().source()
         << "\nend_reason = " << summary.end_reason << "\n";
+      postprocess::write_atomically(prm.output.directory + "/run-summary.txt",
+                                    [&](std::ostream &o) { o << f.str(); });
     }
 
     template <int dim>

@@ -100,6 +100,16 @@ namespace formsolve
         t->advance(dt);
     }
 
+    template <int dim>
+    void ToolSet<dim>::restore(const unsigned int    i,
+                               const Tensor<1, dim> &displacement,
+                               const double          travel,
+                               const Tensor<1, dim> &velocity)
+    {
+      tools[i]->restore(displacement, travel);
+      tools[i]->set_velocity(velocity);
+    }
+
 #define INSTANTIATE(dim) template class ToolSet<dim>;
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE

@@ -12,7 +12,11 @@ out="$work/existing-results"
 mkdir -p "$out"
 echo "earlier results" > "$out/history.csv"
 echo "keep me" > "$out/checkpoint.dat"
-snapshot() { (cd "$out" && ls -l --time-style=+%s && cat ./*) | md5sum; }
+# A checkpoint written by another case (its parameters differ).
+mkdir -p "$out/checkpoint"
+echo complete > "$out/checkpoint/complete"
+printf 'subsection Geometry\n  set Thickness = 3\nend\n' > "$out/checkpoint/parameters.prm"
+snapshot() { (cd "$out" && ls -lR --time-style=+%s && find . -type f | sort | xargs cat) | md5sum; }
 before=$(snapshot)
 fail=0
 
@@ -79,4 +83,9 @@ expect holder_beyond_blank "Tools/Blank holder/Diameter" "$cup" --set "Tools/Bla
 expect mesh_too_large "Mesh/Planform refinements" "$cases/drawing.prm" --set "Mesh/Planform refinements=12"
 touch "$work/a-file"
 expect unwritable_output "Output/Output directory" "$base" --set "Output/Output directory=$work/a-file/results"
+# Checkpoint and restart.
+expect resume_other_case "written by another case" "$base" --resume
+expect resume_no_checkpoint "no complete checkpoint" "$base" --resume \
+  --set "Output/Output directory=$work/no-checkpoint"
+[ ! -e "$work/no-checkpoint" ] || { echo "FAIL: resume_no_checkpoint created $work/no-checkpoint"; fail=1; }
 exit $fail

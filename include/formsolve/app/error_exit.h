@@ -29,5 +29,12 @@ namespace formsolve
     /// this rank and FORMSOLVE_FAIL_AT_STEP this step, throw there, as a
     /// failing file write on one rank would (tests/cases/check_rank_error.sh).
     void injected_failure(const unsigned int step);
+
+    /// Test hook: if FORMSOLVE_KILL_AT is "<point>:<step>" (point "step":
+    /// before the step is solved, "checkpoint": half-way through writing the
+    /// checkpoint of that step), this process kills itself with SIGKILL
+    /// there, as a power cut or the batch system would
+    /// (tests/cases/check_resume.sh).
+    void injected_kill(const std::string &point, const unsigned int step);
   } // namespace app
 } // namespace formsolve

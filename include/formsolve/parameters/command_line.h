@@ -19,6 +19,7 @@ namespace formsolve
       bool                                             help             = false;
       bool                                             print_parameters = false;
       bool                                             validate         = false;
+      bool                                             resume           = false;
 
       /// Throws dealii::ExcMessage naming the bad argument.
       static CommandLine parse(int argc, char **argv);

@@ -20,6 +20,7 @@ namespace formsolve
       double       revolved_angle       = 270;   // degrees swept
       bool         stop_at_fracture     = false; // end the run at fracture
       bool         report               = true;  // report/ at the end
+      unsigned int checkpoint_interval  = 0;     // steps; 0: at the end only
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);

@@ -30,7 +30,9 @@ namespace formsolve
     public:
       /// Creates <Output directory>/history.csv (rank 0) with the columns of
       /// the tools of @p state.
-      explicit HistoryWriter(const simulation::State<dim> &state);
+      /// With @p keep_rows >= 0, a resumed run: the file keeps that many rows.
+      HistoryWriter(const simulation::State<dim> &state,
+                    const int                     keep_rows = -1);
 
       /// One row for the step just advanced. Forces are for the full part.
       void write(const simulation::State<dim>          &state,

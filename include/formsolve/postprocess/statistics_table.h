@@ -15,10 +15,13 @@ namespace formsolve
     class StatisticsTable
     {
     public:
-      /// Opens (truncates) @p path on rank 0 with @p columns as the header.
+      /// Opens (truncates) @p path on rank 0 with @p columns as the header;
+      /// with @p keep_rows >= 0 (a resumed run) the file keeps its header and
+      /// that many rows, and the table continues after them.
       StatisticsTable(const std::string              &path,
                       const std::vector<std::string> &columns,
-                      const bool                      is_root);
+                      const bool                      is_root,
+                      const int                       keep_rows = -1);
 
       /// Value of @p column in the current row.
       void set(const std::string &column, const double value);
@@ -28,6 +31,8 @@ namespace formsolve
       void write_row();
 
       const std::vector<std::string> &columns() const { return names; }
+      /// Rows in the file.
+      unsigned int n_rows() const { return rows; }
 
     private:
       std::ofstream                      out;
@@ -35,6 +40,7 @@ namespace formsolve
       std::map<std::string, std::size_t> index;
       std::vector<double>                row;
       std::vector<bool>                  filled;
+      unsigned int                       rows = 0;
     };
   } // namespace postprocess
 } // namespace formsolve

@@ -51,6 +51,17 @@ namespace formsolve
                  const dealii::Mapping<dim>    &mapping,
                  const OutputFields<dim>       &fields);
 
+      /// The (time, file) records of solution.pvd and revolved.pvd, for
+      /// checkpoints.
+      using Records = std::vector<std::pair<double, std::string>>;
+      const Records &solution_records() const { return records; }
+      const Records &revolved_pvd_records() const { return revolved_records; }
+      void set_records(const Records &solution, const Records &revolved)
+      {
+        records          = solution;
+        revolved_records = revolved;
+      }
+
     private:
       parameters::Output                          prm;
       std::vector<std::pair<double, std::string>> records, revolved_records;

@@ -17,6 +17,7 @@
 #include <formsolve/postprocess/statistics_table.h>
 #include <formsolve/postprocess/vtu_writer.h>
 #include <formsolve/refinement/mesh_refinement.h>
+#include <formsolve/simulation/checkpoint.h>
 #include <formsolve/simulation/state.h>
 #include <formsolve/solver/assembler.h>
 #include <formsolve/solver/step_solver.h>
@@ -48,6 +49,10 @@ namespace formsolve
       double      critical_stroke = -1;
       std::string fracture_location; // "r z" or "x y z" (mm)
       std::string end_reason;
+      // Running values of the loop (kept in checkpoints).
+      double last_damage        = 0; // deciding damage of the last step
+      double last_damage_travel = 0; // mm
+      double wall_before        = 0; // s of wall time before a resume
     };
 
     template <int dim>
@@ -56,10 +61,12 @@ namespace formsolve
     public:
       TimeLoop(const parameters::Run &run, const dealii::ParameterHandler &prm);
 
-      /// Set up, check the scene, create the output folder, run all steps.
-      /// Throws with a clear message when a step fails at the minimum time
-      /// step (after writing the output of the last converged step).
-      RunSummary run();
+      /// Set up, check the scene, create the output folder, run all steps;
+      /// with @p resume, continue from the newest checkpoint instead. Throws
+      /// with a clear message when a step fails at the minimum time step
+      /// (after writing the output and a checkpoint of the last converged
+      /// step).
+      RunSummary run(const bool resume = false);
 
       /// Build the mesh and check the initial scene, then stop (--validate).
       void validate_scene();
@@ -83,6 +90,11 @@ namespace formsolve
                           RunSummary  &summary);
       /// report/ by scripts/formsolve-report (rank 0; never fails the run).
       void make_report() const;
+      /// The time loop's values for a checkpoint, and back (resume).
+      Metadata loop_metadata(const RunSummary &summary) const;
+      void     restore_loop(const Metadata &meta, RunSummary &summary);
+      /// The complete parameter listing (what a checkpoint must match).
+      std::string parameter_listing() const;
 
       const parameters::Run          &prm;
       const dealii::ParameterHandler &parameter_handler;
@@ -101,6 +113,7 @@ namespace formsolve
       postprocess::ContactFields<dim>               contact_fields;
       postprocess::SheetMeasures<dim>               sheet;
       int                                           last_output_step = -1;
+      unsigned int                                  refinement_rows  = 0;
     };
   } // namespace simulation
 } // namespace formsolve

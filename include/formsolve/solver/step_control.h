@@ -24,6 +24,8 @@ namespace formsolve
       /// time step after an easy step without cutbacks.
       void         accept(const unsigned int iterations);
       unsigned int cutbacks() const { return step_cutbacks; }
+      /// Continue with time step @p t (a resumed run).
+      void set_time_step(const double t) { dt = t; }
 
     private:
       parameters::TimeStepping prm;

@@ -60,6 +60,9 @@ namespace formsolve
 
       const FormingSystem<dim> &forming_system() const { return system; }
       std::string strategy_name() const { return strategy->name(); }
+      /// The time step the next step starts with (step control).
+      double time_step() const { return control.time_step(); }
+      void   set_time_step(const double t) { control.set_time_step(t); }
 
     private:
       const parameters::Run                         &prm;

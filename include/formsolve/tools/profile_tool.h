@@ -60,7 +60,13 @@ namespace formsolve
       Tensor<1, dim> displacement() const override { return offset; }
       void           advance(const double dt) override;
       double         travel() const override { return travelled; }
-      std::string    name() const override { return tool_name; }
+      void           restore(const Tensor<1, dim> &displacement,
+                             const double          travel) override
+      {
+        offset    = displacement;
+        travelled = travel;
+      }
+      std::string name() const override { return tool_name; }
 
     private:
       std::string    tool_name;

@@ -64,6 +64,10 @@ namespace formsolve
       /// Distance travelled so far (mm).
       virtual double travel() const = 0;
 
+      /// Put the tool back where a checkpoint found it.
+      virtual void restore(const Tensor<1, dim> &displacement,
+                           const double          travel) = 0;
+
       virtual std::string name() const = 0;
     };
   } // namespace tools

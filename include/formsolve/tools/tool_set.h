@@ -51,7 +51,12 @@ namespace formsolve
       void   set_axial_velocity(const unsigned int i, const double w);
       double axial_velocity(const unsigned int i) const;
 
-      void   advance(const double dt);
+      void advance(const double dt);
+      /// Put tool @p i back where a checkpoint found it.
+      void   restore(const unsigned int    i,
+                     const Tensor<1, dim> &displacement,
+                     const double          travel,
+                     const Tensor<1, dim> &velocity);
       double punch_travel() const { return tools[0]->travel(); }
       double punch_stroke() const { return stroke; }
       double punch_speed() const { return speed; }

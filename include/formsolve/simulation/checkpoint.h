@@ -1,0 +1,43 @@
+// Checkpoint and restart: the State (distributed mesh, nodal fields with the
+// contact state, quadrature history, tools, holder, time) and the time
+// loop's own values, written atomically into <Output directory>/checkpoint.
+#pragma once
+
+#include <formsolve/simulation/state.h>
+#include <formsolve/solver/assembler.h>
+
+#include <map>
+#include <string>
+
+namespace formsolve
+{
+  namespace simulation
+  {
+    /// What the time loop needs besides the State, as text key = value.
+    using Metadata = std::map<std::string, std::string>;
+
+    template <int dim>
+    class Checkpoint
+    {
+    public:
+      /// @p parameters: the complete parameter listing of the run; a
+      /// checkpoint is only resumed by the same case (Output entries aside).
+      Checkpoint(const std::string &output_directory,
+                 const std::string &parameters);
+
+      /// Writes a complete checkpoint (collective) into checkpoint.new and
+      /// renames it to checkpoint when every rank has finished, so that a
+      /// process killed at any moment leaves the last complete one.
+      void save(const State<dim> &state, const Metadata &meta) const;
+
+      /// Loads the newest complete checkpoint into @p state, whose
+      /// triangulation must be empty; returns the time loop's values.
+      /// Throws naming --resume if there is none, or if it is another case's.
+      Metadata load(State<dim>                   &state,
+                    const solver::Assembler<dim> &assembler) const;
+
+    private:
+      std::string directory, parameters;
+    };
+  } // namespace simulation
+} // namespace formsolve

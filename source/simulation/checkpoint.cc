@@ -1,0 +1,262 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/cell_data_transfer.templates.h>
+#include <deal.II/distributed/solution_transfer.h>
+
+#include <formsolve/app/error_exit.h>
+#include <formsolve/geometry/blank_mesh.h>
+#include <formsolve/model/dimensions.h>
+#include <formsolve/simulation/checkpoint.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace formsolve
+{
+  namespace simulation
+  {
+    using namespace dealii;
+    namespace fs = std::filesystem;
+
+    namespace
+    {
+      using CellValues = std::vector<std::vector<double>>;
+
+      /// The listing without the Output subsection: a run may be resumed
+      /// with other output settings.
+      std::string without_output(const std::string &listing)
+      {
+        std::istringstream in(listing);
+        std::ostringstream out;
+        std::string        line;
+        int                depth = 0, skip_from = -1;
+        while (std::getline(in, line))
+          {
+            const auto first = line.find_first_not_of(" \t");
+            const auto word =
+              first == std::string::npos ? "" : line.substr(first);
+            if (word.rfind("subsection", 0) == 0)
+              {
+                if (skip_from < 0 && word == "subsection Output")
+                  skip_from = depth;
+                ++depth;
+              }
+            else if (word == "end")
+              {
+                --depth;
+                if (depth == skip_from)
+                  {
+                    skip_from = -1;
+                    continue;
+                  }
+              }
+            if (skip_from < 0 && !word.empty() && word[0] != '#')
+              out << word << '\n';
+          }
+        return out.str();
+      }
+
+      template <int dim>
+      std::string text(const Tensor<1, dim> &t)
+      {
+        std::ostringstream s;
+        s.precision(17);
+        for (unsigned int d = 0; d < dim; ++d)
+          s << (d ? " " : "") << t[d];
+        return s.str();
+      }
+
+      template <int dim>
+      Tensor<1, dim> tensor(const std::string &text)
+      {
+        std::istringstream s(text);
+        Tensor<1, dim>     t;
+        for (unsigned int d = 0; d < dim; ++d)
+          s >> t[d];
+        return t;
+      }
+
+      std::string number(const double x)
+      {
+        std::ostringstream s;
+        s.precision(17);
+        s << x;
+        return s.str();
+      }
+    } // namespace
+
+    template <int dim>
+    Checkpoint<dim>::Checkpoint(const std::string &output_directory,
+                                const std::string &parameters)
+        : directory(output_directory)
+        , parameters(parameters)
+    {}
+
+    template <int dim>
+    void Checkpoint<dim>::save(const State<dim> &state,
+                               const Metadata   &meta) const
+    {
+      const bool root = Utilities::MPI::this_mpi_process(state.comm) == 0;
+      const std::string fresh = directory + "/checkpoint.new",
+                        done  = directory + "/checkpoint",
+                        old   = directory + "/checkpoint.old";
+      if (root)
+        {
+          fs::remove_all(fresh);
+          fs::create_directories(fresh);
+        }
+      MPI_Barrier(state.comm);
+
+      // Fields and history attached to the mesh, in this order on loading.
+      parallel::distributed::SolutionTransfer<dim, VectorType> fields(
+        state.dof_handler);
+      const auto                      values = state.transferable_fields();
+      std::vector<const VectorType *> in;
+      for (const auto &v : values)
+        in.push_back(&v);
+      fields.prepare_for_serialization(in);
+      CellValues          history(state.tria.n_active_cells());
+      std::vector<double> packed;
+      for (const auto &cell : state.tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &q : state.history.get_data(cell))
+            {
+              q->pack_values(packed);
+              auto &h = history[cell->active_cell_index()];
+              h.insert(h.end(), packed.begin(), packed.end());
+            }
+      parallel::distributed::CellDataTransfer<dim, dim, CellValues> cells(
+        state.tria,
+        /*variable size*/ true);
+      cells.prepare_for_serialization(history);
+      state.tria.save(fresh + "/mesh");
+      app::injected_kill("checkpoint", state.step);
+
+      if (root)
+        {
+          Metadata all = meta;
+          all["time"]  = number(state.time);
+          all["step"]  = std::to_string(state.step);
+          for (unsigned int t = 0; t < state.tools.size(); ++t)
+            {
+              const auto key         = "tool." + std::to_string(t);
+              all[key + ".position"] = text<dim>(state.tools[t].displacement());
+              all[key + ".travel"]   = number(state.tools[t].travel());
+              all[key + ".velocity"] = text<dim>(state.tools[t].velocity());
+            }
+          all["holder.force_control"] =
+            std::to_string(state.holder.force_control);
+          all["holder.released"]       = std::to_string(state.holder.released);
+          all["holder.velocity"]       = number(state.holder.velocity);
+          all["holder.release_travel"] = number(state.holder.release_travel);
+          std::ofstream m(fresh + "/meta.txt");
+          for (const auto &[k, v] : all)
+            m << k << " = " << v << '\n';
+          std::ofstream(fresh + "/parameters.prm") << parameters;
+          m.close();
+          std::ofstream(fresh + "/complete") << "complete\n";
+        }
+      MPI_Barrier(state.comm);
+      if (root)
+        {
+          fs::remove_all(old);
+          if (fs::exists(done))
+            fs::rename(done, old);
+          fs::rename(fresh, done);
+          fs::remove_all(old);
+        }
+      MPI_Barrier(state.comm);
+    }
+
+    template <int dim>
+    Metadata
+    Checkpoint<dim>::load(State<dim>                   &state,
+                          const solver::Assembler<dim> &assembler) const
+    {
+      // The newest complete one: a save interrupted after its rename step
+      // leaves checkpoint.new or checkpoint.old complete.
+      std::string from;
+      for (const auto *name :
+           {"checkpoint", "checkpoint.new", "checkpoint.old"})
+        if (from.empty() && fs::exists(directory + "/" + name + "/complete"))
+          from = directory + "/" + name;
+      AssertThrow(!from.empty(),
+                  ExcMessage("--resume: there is no complete checkpoint in " +
+                             directory + " (Output/Checkpoint interval)"));
+      std::ifstream      p(from + "/parameters.prm");
+      std::ostringstream saved;
+      saved << p.rdbuf();
+      AssertThrow(without_output(saved.str()) == without_output(parameters),
+                  ExcMessage("--resume: the checkpoint in " + from +
+                             " was written by another case: its parameters "
+                             "(" +
+                             from +
+                             "/parameters.prm) differ from these "
+                             "outside the Output subsection"));
+      Metadata      meta;
+      std::ifstream m(from + "/meta.txt");
+      std::string   line;
+      while (std::getline(m, line))
+        {
+          const auto eq = line.find(" = ");
+          if (eq != std::string::npos)
+            meta[line.substr(0, eq)] = line.substr(eq + 3);
+        }
+
+      geometry::create_blank_mesh(state.prm.geometry,
+                                  state.prm.mesh,
+                                  state.tria);
+      state.tria.load(from + "/mesh");
+      state.setup_dofs(assembler);
+      parallel::distributed::SolutionTransfer<dim, VectorType> fields(
+        state.dof_handler);
+      std::vector<VectorType>   values(2 + 3 * state.tools.size(),
+                                     VectorType(state.owned, state.comm));
+      std::vector<VectorType *> out;
+      for (auto &v : values)
+        out.push_back(&v);
+      fields.deserialize(out);
+      CellValues history(state.tria.n_active_cells());
+      parallel::distributed::CellDataTransfer<dim, dim, CellValues> cells(
+        state.tria,
+        true);
+      cells.deserialize(history);
+      for (const auto &cell : state.tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const auto &h = history[cell->active_cell_index()];
+            auto        q = state.history.get_data(cell);
+            const auto  n = q[0]->number_of_values();
+            AssertThrow(h.size() == n * q.size(),
+                        ExcMessage(
+                          "--resume: the checkpoint in " + from +
+                          " does not fit this program's history data"));
+            for (unsigned int i = 0; i < q.size(); ++i)
+              q[i]->unpack_values(std::vector<double>(h.begin() + i * n,
+                                                      h.begin() + (i + 1) * n));
+          }
+      state.set_transferable_fields(values);
+
+      state.time = std::stod(meta.at("time"));
+      state.step = std::stoul(meta.at("step"));
+      for (unsigned int t = 0; t < state.tools.size(); ++t)
+        {
+          const auto key = "tool." + std::to_string(t);
+          state.tools.restore(t,
+                              tensor<dim>(meta.at(key + ".position")),
+                              std::stod(meta.at(key + ".travel")),
+                              tensor<dim>(meta.at(key + ".velocity")));
+        }
+      state.holder.force_control  = meta.at("holder.force_control") == "1";
+      state.holder.released       = meta.at("holder.released") == "1";
+      state.holder.velocity       = std::stod(meta.at("holder.velocity"));
+      state.holder.release_travel = std::stod(meta.at("holder.release_travel"));
+      state.update_contact_areas();
+      return meta;
+    }
+
+#define INSTANTIATE(dim) template class Checkpoint<dim>;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace simulation
+} // namespace formsolve

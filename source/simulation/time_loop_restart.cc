@@ -1,0 +1,115 @@
+// What the time loop keeps in a checkpoint besides the State: its running
+// statistics, the step control's time step, the output records.
+#include <deal.II/base/mpi.h>
+
+#include <formsolve/model/dimensions.h>
+#include <formsolve/simulation/time_loop.h>
+
+#include <sstream>
+
+namespace formsolve
+{
+  namespace simulation
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      std::string number(const double x)
+      {
+        std::ostringstream s;
+        s.precision(17);
+        s << x;
+        return s.str();
+      }
+
+      std::string records(const postprocess::VtuWriter<2>::Records &r)
+      {
+        std::ostringstream s;
+        s.precision(17);
+        for (const auto &[t, f] : r)
+          s << t << '|' << f << ';';
+        return s.str();
+      }
+
+      postprocess::VtuWriter<2>::Records records(const std::string &text)
+      {
+        postprocess::VtuWriter<2>::Records r;
+        std::istringstream                 in(text);
+        std::string                        item;
+        while (std::getline(in, item, ';'))
+          if (const auto bar = item.find('|'); bar != std::string::npos)
+            r.emplace_back(std::stod(item.substr(0, bar)),
+                           item.substr(bar + 1));
+        return r;
+      }
+    } // namespace
+
+    template <int dim>
+    std::string TimeLoop<dim>::parameter_listing() const
+    {
+      std::ostringstream s;
+      parameter_handler.print_parameters(s, ParameterHandler::PRM);
+      return s.str();
+    }
+
+    template <int dim>
+    Metadata TimeLoop<dim>::loop_metadata(const RunSummary &s) const
+    {
+      return {
+        {"summary.newton_iterations", std::to_string(s.newton_iterations)},
+        {"summary.linear_iterations", std::to_string(s.linear_iterations)},
+        {"summary.cutbacks", std::to_string(s.cutbacks)},
+        {"summary.newton_wall_time", number(s.newton_wall_time)},
+        {"summary.wall_time", number(s.wall_time)},
+        {"summary.n_dofs", number(s.n_dofs)},
+        {"summary.dof_steps", number(s.dof_steps)},
+        {"summary.peak_punch_force", number(s.peak_punch_force)},
+        {"summary.peak_force_travel", number(s.peak_force_travel)},
+        {"summary.max_penetration", number(s.max_penetration)},
+        {"summary.critical_stroke", number(s.critical_stroke)},
+        {"summary.fracture_location", s.fracture_location},
+        {"summary.last_damage", number(s.last_damage)},
+        {"summary.last_damage_travel", number(s.last_damage_travel)},
+        {"time_step", number(step_solver.time_step())},
+        {"last_output_step", std::to_string(last_output_step)},
+        {"refinement_rows",
+         std::to_string(refinement_log ? refinement_log->n_rows() : 0)},
+        {"pvd.solution", records(writer->solution_records())},
+        {"pvd.revolved", records(writer->revolved_pvd_records())}};
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::restore_loop(const Metadata &m, RunSummary &s)
+    {
+      s.newton_iterations  = std::stoul(m.at("summary.newton_iterations"));
+      s.linear_iterations  = std::stoul(m.at("summary.linear_iterations"));
+      s.cutbacks           = std::stoul(m.at("summary.cutbacks"));
+      s.newton_wall_time   = std::stod(m.at("summary.newton_wall_time"));
+      s.wall_before        = std::stod(m.at("summary.wall_time"));
+      s.n_dofs             = std::stod(m.at("summary.n_dofs"));
+      s.dof_steps          = std::stod(m.at("summary.dof_steps"));
+      s.peak_punch_force   = std::stod(m.at("summary.peak_punch_force"));
+      s.peak_force_travel  = std::stod(m.at("summary.peak_force_travel"));
+      s.max_penetration    = std::stod(m.at("summary.max_penetration"));
+      s.critical_stroke    = std::stod(m.at("summary.critical_stroke"));
+      s.fracture_location  = m.at("summary.fracture_location");
+      s.last_damage        = std::stod(m.at("summary.last_damage"));
+      s.last_damage_travel = std::stod(m.at("summary.last_damage_travel"));
+      s.steps              = state.step;
+      step_solver.set_time_step(std::stod(m.at("time_step")));
+      last_output_step = std::stoi(m.at("last_output_step"));
+      refinement_rows  = std::stoul(m.at("refinement_rows"));
+      writer->set_records(records(m.at("pvd.solution")),
+                          records(m.at("pvd.revolved")));
+    }
+
+    // The class is instantiated in time_loop.cc; these members are here.
+#define INSTANTIATE(dim)                                                       \
+  template std::string TimeLoop<dim>::parameter_listing() const;               \
+  template Metadata    TimeLoop<dim>::loop_metadata(const RunSummary &) const; \
+  template void TimeLoop<dim>::restore_loop(const Metadata &, RunSummary &);
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace simulation
+} // namespace formsolve
