@@ -1,10 +1,9 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/quadrature_point_data.h>
 #include <deal.II/distributed/solution_transfer.h>
-#include <deal.II/fe/fe_dgq.h>
 
 #include <formsolve/model/dimensions.h>
 #include <formsolve/refinement/adapt.h>
+#include <formsolve/refinement/history_transfer.h>
 
 namespace formsolve
 {
@@ -64,16 +63,9 @@ namespace formsolve
       transfer.prepare_for_coarsening_and_refinement(in);
       // History: L2 projection onto discontinuous Q_p per cell, which keeps
       // cell integrals when cells are split or merged.
-      const FE_DGQ<dim> projection(state.prm.mesh.degree);
-      parallel::distributed::ContinuousQuadratureDataTransfer<
-        dim,
-        simulation::QuadraturePointHistory>
-        history_transfer(projection,
-                         assembler.quadrature(),
-                         assembler.quadrature());
-      store_parent_history(tria, assembler.quadrature(), state.history);
-      history_transfer.prepare_for_coarsening_and_refinement(tria,
-                                                             state.history);
+      HistoryTransfer<dim> history_transfer(state.prm.mesh.degree,
+                                            assembler.quadrature());
+      history_transfer.prepare(tria, state.history);
       state.mapping.reset();
       tria.execute_coarsening_and_refinement();
 
@@ -84,7 +76,7 @@ namespace formsolve
       for (auto &f : transferred)
         out.push_back(&f);
       transfer.interpolate(out);
-      history_transfer.interpolate();
+      history_transfer.interpolate(state.history);
       state.set_transferable_fields(transferred);
       state.update_contact_areas();
 

@@ -126,50 +126,7 @@ namespace formsolve
       return flags;
     }
 
-    template <int dim>
-    void store_parent_history(const Triangulation<dim>        &tria,
-                              const Quadrature<dim>           &quadrature,
-                              simulation::HistoryStorage<dim> &history)
-    {
-      std::vector<double> values, mean;
-      for (const auto &parent : tria.cell_iterators())
-        {
-          if (!parent->has_children())
-            continue;
-          bool family = true;
-          for (unsigned int c = 0; c < parent->n_children() && family; ++c)
-            {
-              const auto child = parent->child(c);
-              family = child->is_active() && child->is_locally_owned() &&
-                       child->coarsen_flag_set();
-            }
-          if (!family)
-            continue;
-          history.initialize(parent, quadrature.size());
-          const auto target = history.get_data(parent);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              const unsigned int c =
-                GeometryInfo<dim>::child_cell_from_point(quadrature.point(q));
-              const auto data = history.get_data(parent->child(c));
-              mean.assign(data[0]->number_of_values(), 0.);
-              for (unsigned int k = 0; k < data.size(); ++k)
-                {
-                  // Unit-cell weights: the child's (reference) average.
-                  data[k]->pack_values(values);
-                  for (unsigned int i = 0; i < mean.size(); ++i)
-                    mean[i] += quadrature.weight(k) * values[i];
-                }
-              target[q]->unpack_values(mean);
-            }
-        }
-    }
-
-#define INSTANTIATE(dim)                                                      \
-  template void store_parent_history<dim>(const Triangulation<dim> &,         \
-                                          const Quadrature<dim> &,            \
-                                          simulation::HistoryStorage<dim> &); \
-  template class RefinementCriteria<dim>;
+#define INSTANTIATE(dim) template class RefinementCriteria<dim>;
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace refinement

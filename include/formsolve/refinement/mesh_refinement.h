@@ -24,17 +24,6 @@ namespace formsolve
       unsigned int coarsen = 0;
     };
 
-    /// Quadrature history on every parent whose children are all flagged for
-    /// coarsening and owned here: at each parent point the mean of the child
-    /// containing it, which keeps the integral over the family (exactly for
-    /// one Gauss point per child, Q1). deal.II's
-    /// ContinuousQuadratureDataTransfer does not coarsen by itself: it packs
-    /// the parent's data, which this provides.
-    template <int dim>
-    void store_parent_history(const dealii::Triangulation<dim> &tria,
-                              const dealii::Quadrature<dim>    &quadrature,
-                              simulation::HistoryStorage<dim>  &history);
-
     template <int dim>
     class RefinementCriteria
     {
