@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Configures (Release) and builds formsolve in build/ (or $BUILD_DIR).
+# Configures and builds formsolve in build/ (or $BUILD_DIR), as $BUILD_TYPE
+# (Release unless set; Debug links deal.II's debug library, assertions on).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD_DIR:-$root/build}
+type=${BUILD_TYPE:-Release}
 mkdir -p "$build"
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > "$build/cmake.log" 2>&1 \
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE="$type" > "$build/cmake.log" 2>&1 \
   || { cat "$build/cmake.log"; exit 1; }
 cmake --build "$build" -j "$(nproc)"

@@ -11,6 +11,7 @@ packages=(
   python3-vtk9 python3-numpy        # VTU read-back test
   python3-matplotlib                # benchmark charts, run report
   xvfb                              # offscreen X server for the report's VTK pictures
+  valgrind                          # memcheck test of a tiny case
 )
 missing=()
 for p in "${packages[@]}"; do

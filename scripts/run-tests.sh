@@ -1,9 +1,14 @@
 #!/usr/bin/env bash
 # One command from a fresh Debian 12 machine to a tested build: install
-# dependencies, build (Release), run the whole ctest suite.
+# dependencies, build Release and run the whole ctest suite, then build Debug
+# (deal.II's debug library: every Assert on) and run its fast subset
+# (ctest label "debug"). FORMSOLVE_SKIP_DEBUG=1 leaves the Debug part out.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/install-dependencies.sh"
 bash "$root/scripts/build.sh"
-cd "${BUILD_DIR:-$root/build}"
-ctest --output-on-failure -j "$(nproc)"
+(cd "${BUILD_DIR:-$root/build}" && ctest --output-on-failure -j "$(nproc)")
+if [ "${FORMSOLVE_SKIP_DEBUG:-0}" != 1 ]; then
+  BUILD_DIR="$root/build-debug" BUILD_TYPE=Debug bash "$root/scripts/build.sh"
+  (cd "$root/build-debug" && ctest --output-on-failure -j "$(nproc)" -L debug)
+fi

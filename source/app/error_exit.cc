@@ -2,6 +2,7 @@
 
 #include <formsolve/app/error_exit.h>
 
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -23,12 +24,73 @@ namespace formsolve
       MPI_Comm_dup(MPI_COMM_WORLD, &error_comm);
     }
 
+    namespace
+    {
+      /// Length of the valid UTF-8 sequence at @p i, 0 if there is none.
+      std::size_t utf8_length(const std::string &s, const std::size_t i)
+      {
+        const auto        c = static_cast<unsigned char>(s[i]);
+        const std::size_t n = (c >= 0xf0 && c < 0xf5)   ? 4
+                              : (c >= 0xe0 && c < 0xf0) ? 3
+                              : (c >= 0xc2 && c < 0xe0) ? 2
+                                                        : 0;
+        if (n == 0 || i + n > s.size())
+          return 0;
+        for (std::size_t k = 1; k < n; ++k)
+          if ((static_cast<unsigned char>(s[i + k]) & 0xc0) != 0x80)
+            return 0;
+        // No overlong forms, surrogates or code points beyond U+10FFFF.
+        const auto d = static_cast<unsigned char>(s[i + 1]);
+        if ((c == 0xe0 && d < 0xa0) || (c == 0xed && d > 0x9f) ||
+            (c == 0xf0 && d < 0x90) || (c == 0xf4 && d > 0x8f))
+          return 0;
+        return n;
+      }
+    } // namespace
+
     std::string one_line(const std::string &text)
     {
-      std::istringstream words(text);
+      // Input echoed in a message (a garbage line of a .prm) must not break
+      // the one line or the terminal: control characters and bytes that are
+      // not UTF-8 become '?', and very long messages are cut.
+      std::string clean;
+      for (std::size_t i = 0; i < text.size();)
+        {
+          const auto c = static_cast<unsigned char>(text[i]);
+          if (c < 0x80)
+            {
+              clean += std::isspace(c)           ? ' '
+                       : (c < 0x20 || c == 0x7f) ? '?'
+                                                 : text[i];
+              ++i;
+            }
+          else if (const auto n = utf8_length(text, i); n > 0)
+            {
+              const auto code =
+                n == 2 ? ((c & 0x1f) << 6) | (text[i + 1] & 0x3f) : 0x100;
+              // C1 controls (U+0080..U+009F) and NEL break lines too.
+              clean += code < 0xa0 ? std::string("?") : text.substr(i, n);
+              i += n;
+            }
+          else
+            {
+              clean += '?';
+              ++i;
+            }
+        }
+      std::istringstream words(clean);
       std::string        line, word;
       while (words >> word)
         line += (line.empty() ? "" : " ") + word;
+      constexpr std::size_t max_length = 2000;
+      if (line.size() > max_length)
+        {
+          std::size_t cut = max_length;
+          while (cut > 0 &&
+                 (static_cast<unsigned char>(line[cut]) & 0xc0) == 0x80)
+            --cut;
+          line = line.substr(0, cut) + " ... (message cut)";
+        }
       return line;
     }
 

@@ -83,6 +83,22 @@ expect holder_beyond_blank "Tools/Blank holder/Diameter" "$cup" --set "Tools/Bla
 expect mesh_too_large "Mesh/Planform refinements" "$cases/drawing.prm" --set "Mesh/Planform refinements=12"
 touch "$work/a-file"
 expect unwritable_output "Output/Output directory" "$base" --set "Output/Output directory=$work/a-file/results"
+# Non-finite numbers, a truncated file, binary garbage as input.
+expect inf_stroke "Tools/Punch/Stroke" "$base" --set "Tools/Punch/Stroke=inf"
+expect nan_friction "Friction coefficient" "$base" --set "Tools/Die/Friction coefficient=nan"
+head -c 1500 "$cases/../fuzz/seed-axisymmetric-refined.prm" > "$work/truncated.prm"
+expect truncated_prm "truncated.prm" "$work/truncated.prm"
+head -c 2000 /dev/urandom > "$work/garbage.prm"
+expect binary_garbage "garbage.prm" "$work/garbage.prm"
+# gmsh planforms that cannot be used: empty, triangles, a 3-D mesh, garbage.
+: > "$work/empty.msh"
+printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 0\n2 30 0 0\n3 0 30 0\n$EndNodes\n$Elements\n1\n1 2 2 0 1 1 2 3\n$EndElements\n' > "$work/triangles.msh"
+printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n8\n1 0 0 0\n2 30 0 0\n3 30 30 0\n4 0 30 0\n5 0 0 1\n6 30 0 1\n7 30 30 1\n8 0 30 1\n$EndNodes\n$Elements\n1\n1 5 2 0 1 1 2 3 4 5 6 7 8\n$EndElements\n' > "$work/hexahedra.msh"
+head -c 3000 /dev/urandom > "$work/garbage.msh"
+for m in empty triangles hexahedra garbage; do
+  expect "gmsh_$m" "Geometry/Mesh file" "$base" --set "Geometry/Blank shape=gmsh" \
+    --set "Geometry/Mesh file=$work/$m.msh"
+done
 # Checkpoint and restart.
 expect resume_other_case "written by another case" "$base" --resume
 expect resume_no_checkpoint "no complete checkpoint" "$base" --resume \
