@@ -383,7 +383,7 @@ namespace formsolve
                 << " mm  wall=" << postprocess::Progress::duration(wall)
                 << "  left~"
                 << postprocess::Progress::duration(progress.time_left(stroke))
-                << std::defaultfloat << std::endl;
+                << std::defaultfloat << std::setprecision(6) << std::endl;
 
           const bool last = travel >= stroke * (1 - 1e-12);
           if (prm.output.interval > 0 &&
