@@ -76,14 +76,15 @@ namespace formsolve
         return t;
       }
 
-      std::string number(const double x)
-      {
-        std::ostringstream s;
-        s.precision(17);
-        s << x;
-        return s.str();
-      }
     } // namespace
+
+    std::string exact_text(const double x)
+    {
+      std::ostringstream s;
+      s.precision(17);
+      s << x;
+      return s.str();
+    }
 
     template <int dim>
     Checkpoint<dim>::Checkpoint(const std::string &output_directory,
@@ -135,20 +136,21 @@ namespace formsolve
       if (root)
         {
           Metadata all = meta;
-          all["time"]  = number(state.time);
+          all["time"]  = exact_text(state.time);
           all["step"]  = std::to_string(state.step);
           for (unsigned int t = 0; t < state.tools.size(); ++t)
             {
               const auto key         = "tool." + std::to_string(t);
               all[key + ".position"] = text<dim>(state.tools[t].displacement());
-              all[key + ".travel"]   = number(state.tools[t].travel());
+              all[key + ".travel"]   = exact_text(state.tools[t].travel());
               all[key + ".velocity"] = text<dim>(state.tools[t].velocity());
             }
           all["holder.force_control"] =
             std::to_string(state.holder.force_control);
-          all["holder.released"]       = std::to_string(state.holder.released);
-          all["holder.velocity"]       = number(state.holder.velocity);
-          all["holder.release_travel"] = number(state.holder.release_travel);
+          all["holder.released"] = std::to_string(state.holder.released);
+          all["holder.velocity"] = exact_text(state.holder.velocity);
+          all["holder.release_travel"] =
+            exact_text(state.holder.release_travel);
           std::ofstream m(fresh + "/meta.txt");
           for (const auto &[k, v] : all)
             m << k << " = " << v << '\n';

@@ -15,14 +15,6 @@ namespace formsolve
 
     namespace
     {
-      std::string number(const double x)
-      {
-        std::ostringstream s;
-        s.precision(17);
-        s << x;
-        return s.str();
-      }
-
       std::string records(const postprocess::VtuWriter<2>::Records &r)
       {
         std::ostringstream s;
@@ -60,18 +52,18 @@ namespace formsolve
         {"summary.newton_iterations", std::to_string(s.newton_iterations)},
         {"summary.linear_iterations", std::to_string(s.linear_iterations)},
         {"summary.cutbacks", std::to_string(s.cutbacks)},
-        {"summary.newton_wall_time", number(s.newton_wall_time)},
-        {"summary.wall_time", number(s.wall_time)},
-        {"summary.n_dofs", number(s.n_dofs)},
-        {"summary.dof_steps", number(s.dof_steps)},
-        {"summary.peak_punch_force", number(s.peak_punch_force)},
-        {"summary.peak_force_travel", number(s.peak_force_travel)},
-        {"summary.max_penetration", number(s.max_penetration)},
-        {"summary.critical_stroke", number(s.critical_stroke)},
+        {"summary.newton_wall_time", exact_text(s.newton_wall_time)},
+        {"summary.wall_time", exact_text(s.wall_time)},
+        {"summary.n_dofs", exact_text(s.n_dofs)},
+        {"summary.dof_steps", exact_text(s.dof_steps)},
+        {"summary.peak_punch_force", exact_text(s.peak_punch_force)},
+        {"summary.peak_force_travel", exact_text(s.peak_force_travel)},
+        {"summary.max_penetration", exact_text(s.max_penetration)},
+        {"summary.critical_stroke", exact_text(s.critical_stroke)},
         {"summary.fracture_location", s.fracture_location},
-        {"summary.last_damage", number(s.last_damage)},
-        {"summary.last_damage_travel", number(s.last_damage_travel)},
-        {"time_step", number(step_solver.time_step())},
+        {"summary.last_damage", exact_text(s.last_damage)},
+        {"summary.last_damage_travel", exact_text(s.last_damage_travel)},
+        {"time_step", exact_text(step_solver.time_step())},
         {"last_output_step", std::to_string(last_output_step)},
         {"refinement_rows",
          std::to_string(refinement_log ? refinement_log->n_rows() : 0)},

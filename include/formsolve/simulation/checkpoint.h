@@ -16,6 +16,9 @@ namespace formsolve
     /// What the time loop needs besides the State, as text key = value.
     using Metadata = std::map<std::string, std::string>;
 
+    /// @p x as text that reads back to the same double (17 digits).
+    std::string exact_text(const double x);
+
     template <int dim>
     class Checkpoint
     {
