@@ -50,6 +50,7 @@ namespace formsolve
       out.deviatoric_stress = 2. * out.viscosity * e;
       out.beta =
         newton ? (4. / 9.) * (ds * rate - s) / (rate * rate * rate) : 0.;
+      out.beta_plastic = newton ? -(4. / 9.) * s / (rate * rate * rate) : 0.;
       return out;
     }
   } // namespace material

@@ -86,6 +86,17 @@ namespace formsolve
     void NonlinearSolver::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Nonlinear solver");
+      prm.declare_entry(
+        "Tangent",
+        "stress-velocity",
+        Selection("newton|stress-velocity"),
+        "Linearisation of the flow law. newton: the derivative of the "
+        "stress as a function of the velocity; for a nearly rate-insensitive "
+        "law it keeps almost no stiffness along the current strain rate and "
+        "overshoots. stress-velocity: the stress direction is linearised as "
+        "an unknown of its own at each quadrature point and eliminated "
+        "(doc/theory.md, eq. 4b): the same converged solution in fewer "
+        "iterations.");
       prm.declare_entry("Max iterations",
                         "60",
                         Integer(1),
@@ -131,6 +142,8 @@ namespace formsolve
     void NonlinearSolver::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Nonlinear solver");
+      tangent               = prm.get("Tangent") == "newton" ? Tangent::newton
+                                                             : Tangent::stress_velocity;
       max_iterations        = prm.get_integer("Max iterations");
       residual_tolerance    = prm.get_double("Residual tolerance");
       correction_tolerance  = prm.get_double("Correction tolerance");

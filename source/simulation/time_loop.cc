@@ -318,6 +318,7 @@ namespace formsolve
           summary.newton_wall_time += seconds() - newton_start;
           summary.newton_iterations += report.iterations;
           summary.linear_iterations += report.linear_iterations;
+          summary.matrix_assemblies += report.matrix_assemblies;
           summary.cutbacks += report.cutbacks;
           if (!report.converged)
             {

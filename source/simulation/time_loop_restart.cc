@@ -51,6 +51,7 @@ namespace formsolve
       return {
         {"summary.newton_iterations", std::to_string(s.newton_iterations)},
         {"summary.linear_iterations", std::to_string(s.linear_iterations)},
+        {"summary.matrix_assemblies", std::to_string(s.matrix_assemblies)},
         {"summary.cutbacks", std::to_string(s.cutbacks)},
         {"summary.newton_wall_time", exact_text(s.newton_wall_time)},
         {"summary.wall_time", exact_text(s.wall_time)},
@@ -76,6 +77,7 @@ namespace formsolve
     {
       s.newton_iterations  = std::stoul(m.at("summary.newton_iterations"));
       s.linear_iterations  = std::stoul(m.at("summary.linear_iterations"));
+      s.matrix_assemblies  = std::stoul(m.at("summary.matrix_assemblies"));
       s.cutbacks           = std::stoul(m.at("summary.cutbacks"));
       s.newton_wall_time   = std::stod(m.at("summary.newton_wall_time"));
       s.wall_before        = std::stod(m.at("summary.wall_time"));

@@ -111,6 +111,7 @@ namespace formsolve
         << "\nsteps = " << summary.steps
         << "\nnewton_iterations = " << summary.newton_iterations
         << "\nlinear_iterations = " << summary.linear_iterations
+        << "\nmatrix_assemblies = " << summary.matrix_assemblies
         << "\ncutbacks = " << summary.cutbacks
         << "\nwall_time = " << summary.wall_time
         << "\nnewton_wall_time = " << summary.newton_wall_time

@@ -65,7 +65,8 @@ namespace formsolve
                                   const double                     dt,
                                   const bool                       newton,
                                   MatrixType                      *matrix,
-                                  VectorType &residual) const
+                                  VectorType                      &residual,
+                                  DualStress                      *dual) const
     {
       const auto         &fe = dof_handler.get_fe();
       const unsigned int  n  = fe.n_dofs_per_cell();
@@ -81,7 +82,7 @@ namespace formsolve
       Vector<double>                       r(n);
       std::vector<SymmetricTensor<2, 3>>   D, Dr;
       std::vector<ShapeStrain>             B;
-      std::vector<double>                  tr(n), s(n), div_v;
+      std::vector<double>                  tr(n), s(n), t(n), div_v;
       std::vector<types::global_dof_index> dofs(n);
       const double                         Kv     = material.bulk_viscosity();
       double                               f_int2 = 0;
@@ -105,23 +106,36 @@ namespace formsolve
                   material.evaluate(D[q], h[q]->strain, dt, newton);
                 const double dV = kf.dV(q);
                 kf.shape_strains(q, B);
+                // Stress-velocity linearisation: (4/9) s/rate^3 D'(x)D' becomes
+                // its symmetric part with one D' replaced by rate w.
+                SymmetricTensor<2, 3> w_rate = m.strain_rate_deviator;
+                if (dual)
+                  w_rate = dual->trial(cell->active_cell_index(),
+                                       q,
+                                       m.strain_rate_deviator,
+                                       material.cutoff_rate()) *
+                           m.equivalent_strain_rate;
                 for (unsigned int i = 0; i < n; ++i)
                   {
                     tr[i] = B[i].trace();
                     s[i]  = B[i].contract(m.strain_rate_deviator);
+                    t[i]  = dual ? B[i].contract(w_rate) : s[i];
                     r[i] += B[i].contract(m.deviatoric_stress) * dV;
                   }
                 if (matrix)
                   {
                     // d s'/dD = 2 mu P_dev + beta D' (x) D'  (doc/theory.md,
-                    // eq. 4), in the scalar form B_i : B_j.
-                    const double mu = m.viscosity * dV, beta = m.beta * dV;
+                    // eq. 4, 4b), in the scalar form B_i : B_j.
+                    const double mu     = m.viscosity * dV;
+                    const double beta_h = (m.beta - m.beta_plastic) * dV;
+                    const double beta_p = 0.5 * m.beta_plastic * dV;
                     for (unsigned int i = 0; i < n; ++i)
                       for (unsigned int j = 0; j <= i; ++j)
                         K(i, j) +=
                           2. * mu *
                             (model::contract(B[i], B[j]) - tr[i] * tr[j] / 3.) +
-                          beta * s[i] * s[j];
+                          beta_h * s[i] * s[j] +
+                          beta_p * (s[i] * t[j] + t[i] * s[j]);
                   }
               }
             // Incompressibility by penalty, reduced integration against

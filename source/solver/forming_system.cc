@@ -28,6 +28,8 @@ namespace formsolve
         , strategy(strategy)
         , timer(timer)
         , search(prm.contact.search_distance, prm.contact.max_status_flips)
+        , use_dual(prm.nonlinear.tangent ==
+                   parameters::Tangent::stress_velocity)
     {}
 
     template <int dim>
@@ -52,6 +54,8 @@ namespace formsolve
       holder.reinit(state.owned, state.comm);
       epsilon.clear();
       last_active.clear();
+      dual.reinit(state.dof_handler.get_triangulation().n_active_cells(),
+                  assembler.quadrature().size());
 
       std::vector<std::vector<bool>> modes;
       DoFTools::extract_constant_modes(state.dof_handler,
@@ -63,7 +67,11 @@ namespace formsolve
     template <int dim>
     void FormingSystem<dim>::begin_step(const double step_dt)
     {
-      dt              = step_dt;
+      dt = step_dt;
+      // Each step starts from the secant tangent: the last step's
+      // linearisation point lies in another configuration (and a resumed run
+      // must iterate as the uninterrupted one).
+      dual.reset();
       step_max_linear = 0;
       step_condition  = 0;
     }
@@ -79,6 +87,21 @@ namespace formsolve
 
     template <int dim>
     double FormingSystem<dim>::assemble(const VectorType &v, const bool newton)
+    {
+      ++n_matrix_assemblies;
+      return evaluate(v, newton, true);
+    }
+
+    template <int dim>
+    double FormingSystem<dim>::assemble_residual(const VectorType &v)
+    {
+      return evaluate(v, last_newton, false);
+    }
+
+    template <int dim>
+    double FormingSystem<dim>::evaluate(const VectorType &v,
+                                        const bool        newton,
+                                        const bool        with_matrix)
     {
       state.velocity_ghost = v;
       if (holder_controlled())
@@ -103,11 +126,13 @@ namespace formsolve
                                           state.history,
                                           dt,
                                           newton,
-                                          &matrix,
-                                          residual);
+                                          with_matrix ? &matrix : nullptr,
+                                          residual,
+                                          use_dual ? &dual : nullptr);
       }
-      bool estimate = true;
-      if (strategy.needs_system())
+      // Line-search trials (no matrix) keep the factors of the iterate.
+      bool estimate = !strategy.needs_system();
+      if (strategy.needs_system() && with_matrix)
         {
           // Keep the body system for update_penalty(); estimate here only when
           // there are no factors for these pairs yet.
@@ -121,7 +146,7 @@ namespace formsolve
       if (estimate)
         estimate_penalty(residual, matrix);
       last_newton = newton;
-      add_contact_terms();
+      add_contact_terms(with_matrix);
       return residual.l2_norm();
     }
 
@@ -138,7 +163,7 @@ namespace formsolve
     }
 
     template <int dim>
-    void FormingSystem<dim>::add_contact_terms()
+    void FormingSystem<dim>::add_contact_terms(const bool with_matrix)
     {
       TimerOutput::Scope t(timer, "assembly");
       contact::add_contact_terms(state.contact_set,
@@ -148,7 +173,7 @@ namespace formsolve
                                  dt,
                                  last_newton,
                                  state.constraints,
-                                 &matrix,
+                                 with_matrix ? &matrix : nullptr,
                                  residual);
       if (holder_controlled())
         holder.assemble(state.contact_set,
@@ -212,6 +237,14 @@ namespace formsolve
     {
       return residual * dv +
              (holder_controlled() ? dw * holder.residual() : 0.);
+    }
+
+    template <int dim>
+    void FormingSystem<dim>::accept_step()
+    {
+      w_accepted = w_trial;
+      if (use_dual)
+        dual.accept();
     }
 
     template <int dim>

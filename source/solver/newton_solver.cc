@@ -2,6 +2,7 @@
 
 #include <formsolve/solver/newton_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -25,9 +26,13 @@ namespace formsolve
       bool         picard   = prm.picard_iterations > 0;
       unsigned int fallback = 0; // direct iterations left after a stall
       double       r        = system.assemble(v, !picard);
+      system.accept_step(); // v is the first linearisation point
       if (const double r_new = system.update_penalty(); r_new >= 0)
         r = r_new;
       system.contact_set_changed(); // reset: compare from here on
+      log << "      it  0    |r|/|f|=" << std::scientific
+          << std::setprecision(2) << r / std::max(system.force_scale(), 1e-300)
+          << std::defaultfloat << system.iteration_info() << std::endl;
       NonlinearSystem::VectorType dv(v), trial(v);
 
       for (unsigned int it = 1; it <= prm.max_iterations; ++it)
@@ -67,36 +72,40 @@ namespace formsolve
 
           // Line search on the directional derivative g(alpha) = dv . r(v +
           // alpha dv) of the (for frictionless contact convex) potential:
-          // accept when |g| has dropped enough or g < 0 with a smaller |r|,
-          // else regula falsi towards g = 0. The last trial's assembly serves
-          // the next iteration, so an accepted full step costs one assembly.
+          // accept a trial with a smaller |r| whose |g| has dropped enough or
+          // that still descends (g < 0); regula falsi towards g = 0 where g
+          // turned positive; halve the step where g < 0 but |r| grew. The
+          // full step assembles the matrix with the residual (it serves the
+          // next iteration when accepted); shorter trials the residual only,
+          // and the accepted one its matrix afterwards.
           const bool next_newton = fallback == 0 && it >= prm.picard_iterations;
-          bool       stalled     = false;
-          const double g0        = system.directional_derivative(dv);
-          double       alpha = 1, r_trial = 0, a_lo = 0, g_lo = g0;
+          bool       stalled = false, with_matrix = true;
+          const double g0    = system.directional_derivative(dv);
+          double       alpha = 1, r_trial = 0;
           for (unsigned int ls = 0;; ++ls)
             {
               trial = v;
               trial.add(alpha, dv);
               system.set_step_length(alpha);
-              r_trial        = system.assemble(trial, next_newton);
+              with_matrix    = ls == 0;
+              r_trial        = with_matrix ? system.assemble(trial, next_newton)
+                                           : system.assemble_residual(trial);
               const double g = system.directional_derivative(dv);
-              if (!(g0 < 0) || std::abs(g) <= 0.5 * std::abs(g0) ||
-                  (g < 0 && r_trial < r))
+              if (!(g0 < 0) ||
+                  (r_trial < r && (g < 0 || std::abs(g) <= 0.5 * std::abs(g0))))
                 break;
               if (ls >= prm.max_line_search_steps)
                 {
                   stalled = true;
                   break;
                 }
-              if (g < 0) // still descending: move the lower bracket
+              if (g > 0 && std::abs(g) > 0.5 * std::abs(g0))
                 {
-                  a_lo = alpha, g_lo = g;
-                  break;
+                  const double a_new = alpha * g0 / (g0 - g);
+                  alpha = std::clamp(a_new, 0.1 * alpha, 0.9 * alpha);
                 }
-              const double a_new = a_lo + (alpha - a_lo) * g_lo / (g_lo - g);
-              alpha = std::min(std::max(a_new, a_lo + 0.1 * (alpha - a_lo)),
-                               a_lo + 0.9 * (alpha - a_lo));
+              else
+                alpha *= 0.5;
             }
           if (!std::isfinite(r_trial))
             {
@@ -112,6 +121,8 @@ namespace formsolve
               fallback = 3;
               r_trial  = system.assemble(trial, false);
             }
+          else if (!with_matrix)
+            r_trial = system.assemble(trial, next_newton);
           picard = !next_newton || fallback > 0;
           v      = trial;
           system.accept_step();

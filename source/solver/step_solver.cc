@@ -30,7 +30,8 @@ namespace formsolve
     template <int dim>
     StepReport StepSolver<dim>::solve(const double max_dt)
     {
-      StepReport report;
+      StepReport          report;
+      const unsigned long assemblies = system.matrix_assemblies();
       control.begin_step();
       state.update_contact_areas();
       for (;;)
@@ -57,13 +58,16 @@ namespace formsolve
               state.holder.velocity = system.holder_velocity();
               // adaptive-strict: solve again while a node is deeper than
               // delta; augmented-lagrangian: update the multipliers, likewise.
-              if (!strategy->finish_solve(state.contact_set,
+              // No update after the last allowed pass: nothing would use it in
+              // this step, and the next step must not inherit it.
+              if (passes >= prm.contact.max_strict_passes ||
+                  !strategy->finish_solve(state.contact_set,
                                           state.tools,
                                           state.contact_state,
-                                          state.comm) ||
-                  passes >= prm.contact.max_strict_passes)
+                                          state.comm))
                 break;
             }
+          report.matrix_assemblies = system.matrix_assemblies() - assemblies;
           report.iterations += attempt.iterations;
           report.linear_iterations += attempt.linear_iterations;
           report.picard_iterations += attempt.picard_iterations;

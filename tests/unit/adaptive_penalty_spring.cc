@@ -97,5 +97,56 @@ int main(int argc, char **argv)
       const double u_solved = (q + eps[0] * u_bar) / (k + eps[0]);
       test::close("penetration / delta", (u_solved - u_bar) / delta, 1., 1e-9);
     }
+
+  // adaptive-strict: the persistent scale acts within the bounds (Upper bound
+  // bounds eps), and relaxes towards 1 where the node sits far inside delta.
+  {
+    contact::ContactSet<3> set;
+    set.nodes.resize(1);
+    set.nodes[0].dofs = {{0, 1, 2}};
+    contact::ContactPair<3> pair;
+    pair.node = 0, pair.tool = 0, pair.area = 1;
+    pair.normal[0]     = -1;
+    pair.gap           = u_bar;
+    pair.predicted_gap = -delta;
+    pair.active        = true;
+    set.pairs.push_back(pair);
+    TrilinosWrappers::MPI::Vector r(all, MPI_COMM_WORLD);
+    r[0] = k * (u_bar + delta) - q;
+    r.compress(VectorOperation::insert);
+
+    contact_prm.adaptive_estimate = parameters::AdaptiveEstimate::force;
+    contact::AdaptivePenalty<3> strict(contact_prm, true);
+    contact::ContactState       state;
+    state.reset(1, tools.size());
+    state(0, 0).scale = 1e3; // eps_min * 1e3 = 8e8 > Upper bound * k = 1e8
+    std::vector<double> eps;
+    strict.estimate(set,
+                    tools,
+                    contact::SystemView{&r, &K, &constraints, dt},
+                    state,
+                    eps);
+    test::close("strict eps / (Upper bound * K/dt)",
+                eps[0] / (contact_prm.upper_bound * k),
+                1.,
+                1e-12);
+
+    state(0, 0).scale          = 4;
+    set.pairs[0].predicted_gap = -0.1 * delta; // far inside delta
+    test::close("no re-solve inside delta",
+                strict.finish_solve(set, tools, state, MPI_COMM_WORLD),
+                0,
+                0);
+    test::close("scale halved towards 1", state(0, 0).scale, 2., 1e-15);
+    set.pairs[0].predicted_gap = -2 * delta; // twice too deep
+    test::close("re-solve beyond delta",
+                strict.finish_solve(set, tools, state, MPI_COMM_WORLD),
+                1,
+                0);
+    test::close("scale raised by 1.1 depth/delta",
+                state(0, 0).scale,
+                4.4,
+                1e-12);
+  }
   return test::result();
 }

@@ -70,8 +70,11 @@ namespace
     {
       VectorType v(owned, MPI_COMM_WORLD);
       bc.distribute(v);
-      parameters::NonlinearSolver p{60, 1e-9, 1e-9, 8, 0, true, false};
-      const auto                  report =
+      parameters::NonlinearSolver p;
+      p.residual_tolerance    = 1e-9;
+      p.correction_tolerance  = 1e-9;
+      p.max_line_search_steps = 8;
+      const auto report =
         solver::NewtonSolver(p, ConditionalOStream(std::cout, false))
           .solve(*this, v);
       test::close("Newton converged", report.converged, 1, 0);

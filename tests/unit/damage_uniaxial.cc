@@ -79,8 +79,11 @@ namespace
     void step()
     {
       bc.distribute(state.velocity);
-      parameters::NonlinearSolver p{60, 1e-11, 1e-11, 8, 0, true, false};
-      const auto                  r =
+      parameters::NonlinearSolver p;
+      p.residual_tolerance    = 1e-11;
+      p.correction_tolerance  = 1e-11;
+      p.max_line_search_steps = 8;
+      const auto r =
         solver::NewtonSolver(p, ConditionalOStream(std::cout, false))
           .solve(*this, state.velocity);
       test::close("Newton converged", r.converged, 1, 0);

@@ -26,6 +26,9 @@ namespace formsolve
       double                flow_stress;
       double                viscosity; // mu: s' = 2 mu D'
       double                beta;      // 0 for the secant tangent
+      // The part of beta from the flow law's direction, -(4/9) s/rate^3,
+      // which the stress-velocity linearisation replaces (0: rigid zone).
+      double beta_plastic = 0;
     };
 
     class RigidViscoplastic
@@ -42,6 +45,8 @@ namespace formsolve
 
       /// K_v in sigma_m = K_v tr(D) (MPa s).
       double bulk_viscosity() const { return bulk; }
+      /// The strain rate below which the law is linear (rigid zone), 1/s.
+      double cutoff_rate() const { return cutoff; }
 
       const FlowStress &flow_stress() const { return law; }
 

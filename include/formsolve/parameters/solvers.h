@@ -32,8 +32,16 @@ namespace formsolve
       void        validate() const;
     };
 
+    /// Linearisation of the flow law in the Newton tangent.
+    enum class Tangent
+    {
+      newton,         // d s'/dD of the velocity-only law
+      stress_velocity // the stress direction linearised with the velocity
+    };
+
     struct NonlinearSolver
     {
+      Tangent      tangent               = Tangent::stress_velocity;
       unsigned int max_iterations        = 60;
       double       residual_tolerance    = 1e-6;
       double       correction_tolerance  = 1e-6;

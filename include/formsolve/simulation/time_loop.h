@@ -35,6 +35,7 @@ namespace formsolve
       unsigned int steps             = 0;
       unsigned int newton_iterations = 0;
       unsigned int linear_iterations = 0;
+      unsigned int matrix_assemblies = 0; // tangent assemblies
       unsigned int cutbacks          = 0;
       double       wall_time         = 0;
       double       newton_wall_time  = 0; // spent inside Newton iterations

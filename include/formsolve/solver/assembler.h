@@ -13,6 +13,7 @@
 #include <formsolve/material/rigid_viscoplastic.h>
 #include <formsolve/model/kinematics.h>
 #include <formsolve/simulation/quadrature_history.h>
+#include <formsolve/solver/dual_stress.h>
 
 namespace formsolve
 {
@@ -50,8 +51,11 @@ namespace formsolve
 
       /// Body residual r = f_int (and the tangent if @p matrix is not null)
       /// at velocity @p v (ghosted), geometry given by @p mapping; matrix and
-      /// residual are zeroed first and compressed at the end. Returns the
-      /// norm of the element internal-force vectors, a scale for |r|.
+      /// residual are zeroed first and compressed at the end. With @p dual,
+      /// the Newton tangent is the stress-velocity one (dual_stress.h), and
+      /// the dual directions of this iterate are kept as its trial values.
+      /// Returns the norm of the element internal-force vectors, a scale for
+      /// |r|.
       double assemble_body(const dealii::DoFHandler<dim>           &dof_handler,
                            const dealii::Mapping<dim>              &mapping,
                            const dealii::AffineConstraints<double> &constraints,
@@ -60,7 +64,8 @@ namespace formsolve
                            const double                             dt,
                            const bool                               newton,
                            MatrixType                              *matrix,
-                           VectorType &residual) const;
+                           VectorType                              &residual,
+                           DualStress *dual = nullptr) const;
 
       /// After convergence: integrate strain, thickness strain and damage,
       /// store stresses.

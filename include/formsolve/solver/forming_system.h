@@ -45,9 +45,13 @@ namespace formsolve
       double       holder_velocity() const { return w_accepted; }
       unsigned int max_linear_iterations() const { return step_max_linear; }
       double       condition_estimate() const { return step_condition; }
+      /// Matrix assemblies since the start (line-search trials assemble the
+      /// residual only).
+      unsigned long matrix_assemblies() const { return n_matrix_assemblies; }
 
       // NonlinearSystem
       double       assemble(const VectorType &v, const bool newton) override;
+      double       assemble_residual(const VectorType &v) override;
       double       force_scale() const override { return f_scale; }
       double       directional_derivative(const VectorType &dv) const override;
       unsigned int solve(VectorType &dv) override;
@@ -55,16 +59,22 @@ namespace formsolve
       double       update_penalty() override;
       std::string  iteration_info() const override;
       void         set_step_length(const double alpha) override;
-      void         accept_step() override { w_accepted = w_trial; }
-      double       extra_residual() const override;
-      double       extra_correction() const override;
+      void         accept_step() override;
+      /// Forget the linearisation point of the stress-velocity tangent (a
+      /// rejected step).
+      double extra_residual() const override;
+      double extra_correction() const override;
 
     private:
+      /// Contact search, body and contact terms at @p v; the matrices only
+      /// with @p with_matrix.
+      double
+      evaluate(const VectorType &v, const bool newton, const bool with_matrix);
       /// Factors from the body system (r_b, K_b) of the current pairs.
       void estimate_penalty(const VectorType &r_b, const MatrixType &K_b);
       /// Contact forces and stiffness with the current factors added to the
       /// matrix and residual; holder coupling terms.
-      void add_contact_terms();
+      void add_contact_terms(const bool with_matrix = true);
       bool holder_controlled() const { return state.holder.force_control; }
 
       const parameters::Run         &prm;
@@ -82,14 +92,17 @@ namespace formsolve
       std::vector<double>           epsilon;
       std::vector<bool>             last_active;
       std::unique_ptr<LinearSolver> linear_solver;
+      DualStress                    dual;
+      const bool                    use_dual;
       HolderCoupling<dim>           holder;
       double w_accepted = 0, w_trial = 0, dw = 0; // holder velocity (mm/s)
 
-      double       dt              = 0;
-      double       f_scale         = 0;
-      bool         last_newton     = true; // tangent type of the last assembly
-      unsigned int step_max_linear = 0;
-      double       step_condition  = 0;
+      double        dt              = 0;
+      double        f_scale         = 0;
+      bool          last_newton     = true; // tangent type of the last assembly
+      unsigned int  step_max_linear = 0;
+      double        step_condition  = 0;
+      unsigned long n_matrix_assemblies = 0;
     };
   } // namespace solver
 } // namespace formsolve

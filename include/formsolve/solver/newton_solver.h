@@ -23,6 +23,12 @@ namespace formsolve
       /// Evaluate contact and assemble the residual (and the tangent: Newton
       /// or secant) at @p v. Returns |r|.
       virtual double assemble(const VectorType &v, const bool newton) = 0;
+      /// As assemble(), the residual only (line-search trials); the matrix
+      /// keeps what the last assemble() put there.
+      virtual double assemble_residual(const VectorType &v)
+      {
+        return assemble(v, true);
+      }
       /// A force scale for |r| from the last assembly (internal forces).
       virtual double force_scale() const = 0;
       /// Directional derivative of the potential along the last Newton

@@ -30,6 +30,7 @@ namespace formsolve
       unsigned int linear_iterations     = 0;
       unsigned int picard_iterations     = 0;
       unsigned int passes                = 0; // strict / Uzawa re-solves
+      unsigned int matrix_assemblies     = 0; // tangent assemblies, all tries
       unsigned int max_linear_iterations = 0;
       double       condition_estimate    = 0;
       double       residual              = 0; // |r|/|f| of the last try

@@ -94,10 +94,11 @@ namespace formsolve
             }
           // Stiffness in displacement units (N/mm): K_b carries 1/dt.
           const double stiffness = std::max(K_nn, 0.) / dt;
-          double       eps =
-            std::clamp(force / (target * tools.allowed_penetration(pair.tool)),
-                       lower * stiffness,
-                       upper * stiffness);
+          const auto   bounded   = [&](const double e) {
+            return std::clamp(e, lower * stiffness, upper * stiffness);
+          };
+          double eps =
+            bounded(force / (target * tools.allowed_penetration(pair.tool)));
           // Far from convergence the estimate can jump by orders of magnitude
           // between iterations; let it change by at most a factor 'damping'
           // per estimate, starting from the fixed penalty of the tool.
@@ -109,7 +110,8 @@ namespace formsolve
             eps = std::clamp(eps, last / damping, last * damping);
           if (!reuse)
             last = eps;
-          epsilon[k] = reuse ? last_epsilon[k] : eps * record.scale;
+          // The strict scale acts within the bounds: Upper bound bounds it.
+          epsilon[k] = reuse ? last_epsilon[k] : bounded(eps * record.scale);
           if (active[k])
             {
               ++n_active;
@@ -142,13 +144,18 @@ namespace formsolve
         {
           const double delta = tools.allowed_penetration(pair.tool);
           const double depth = -pair.predicted_gap;
+          double      &scale = state(pair.node, pair.tool).scale;
           if (pair.active && depth > delta)
             {
               // 10 % beyond the proportional correction: the body's own
               // compliance makes the penetration fall less than 1/eps.
-              state(pair.node, pair.tool).scale *= 1.1 * depth / delta;
+              scale *= 1.1 * depth / delta;
               again = 1;
             }
+          else if (!pair.active || depth < 0.5 * delta)
+            // Far inside the bound (or open): what made the estimate too soft
+            // has passed; halve the scale towards 1 at most once per solve.
+            scale = std::max(1., scale * std::max(0.5, depth / (0.5 * delta)));
         }
       return Utilities::MPI::max(again, comm) != 0;
     }

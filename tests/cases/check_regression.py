@@ -1,0 +1,40 @@
+"""history.csv against the stored reference: the physics (forces, gaps,
+penetration, volume, thickness, damage, ...) tightly, per row, with the
+numdiff tolerances of the suite (relative 1e-5 or absolute 1e-7); the solver
+cost (Newton/linear/Picard iterations, strict passes, locked pairs,
+condition estimate, wall time) only loosely, as totals: a better solver must
+not break a reference, a much worse one does (more than 1.5x + 5 Newton
+iterations of the reference in total).
+Usage: check_regression.py OUTDIR REFERENCE"""
+import csv
+import sys
+
+out, reference = sys.argv[1:3]
+COST = {"newton_iterations", "linear_iterations", "picard_iterations",
+        "strict_passes", "max_linear_iterations", "locked_pairs",
+        "condition_estimate", "wall_time"}
+ref = list(csv.DictReader(open(reference)))
+got = list(csv.DictReader(open(f"{out}/history.csv")))
+failures = []
+if len(ref) != len(got):
+    failures.append(f"{len(got)} steps, the reference has {len(ref)}")
+if ref and got and list(ref[0]) != list(got[0]):
+    failures.append("the columns differ from the reference's")
+for a, b in zip(ref, got):
+    for k in a:
+        if k in COST or k not in b:
+            continue
+        x, y = float(a[k]), float(b[k])
+        if abs(x - y) > max(1e-5 * abs(x), 1e-7):
+            failures.append(f"step {a['step']}, {k}: {y!r}, reference {x!r}")
+total = {t: sum(int(r["newton_iterations"]) for r in rows)
+         for t, rows in (("ref", ref), ("got", got))}
+if total["got"] > 1.5 * total["ref"] + 5:
+    failures.append(f"{total['got']} Newton iterations, reference "
+                    f"{total['ref']} (> 1.5x + 5)")
+for f in failures[:30]:
+    print("FAIL", f)
+if failures:
+    sys.exit(1)
+print(f"history.csv matches {reference} ({len(got)} steps; Newton iterations "
+      f"{total['got']}, reference {total['ref']})")
