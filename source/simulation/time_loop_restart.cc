@@ -77,7 +77,10 @@ namespace formsolve
     {
       s.newton_iterations  = std::stoul(m.at("summary.newton_iterations"));
       s.linear_iterations  = std::stoul(m.at("summary.linear_iterations"));
-      s.matrix_assemblies  = std::stoul(m.at("summary.matrix_assemblies"));
+      // Absent in checkpoints written before it was counted.
+      s.matrix_assemblies = m.count("summary.matrix_assemblies") ?
+                              std::stoul(m.at("summary.matrix_assemblies")) :
+                              0;
       s.cutbacks           = std::stoul(m.at("summary.cutbacks"));
       s.newton_wall_time   = std::stod(m.at("summary.newton_wall_time"));
       s.wall_before        = std::stod(m.at("summary.wall_time"));
