@@ -75,12 +75,12 @@ namespace formsolve
     template <int dim>
     void TimeLoop<dim>::restore_loop(const Metadata &m, RunSummary &s)
     {
-      s.newton_iterations  = std::stoul(m.at("summary.newton_iterations"));
-      s.linear_iterations  = std::stoul(m.at("summary.linear_iterations"));
+      s.newton_iterations = std::stoul(m.at("summary.newton_iterations"));
+      s.linear_iterations = std::stoul(m.at("summary.linear_iterations"));
       // Absent in checkpoints written before it was counted.
-      s.matrix_assemblies = m.count("summary.matrix_assemblies") ?
-                              std::stoul(m.at("summary.matrix_assemblies")) :
-                              0;
+      s.matrix_assemblies  = m.count("summary.matrix_assemblies")
+                               ? std::stoul(m.at("summary.matrix_assemblies"))
+                               : 0;
       s.cutbacks           = std::stoul(m.at("summary.cutbacks"));
       s.newton_wall_time   = std::stod(m.at("summary.newton_wall_time"));
       s.wall_before        = std::stod(m.at("summary.wall_time"));
