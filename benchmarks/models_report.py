@@ -94,7 +94,7 @@ runs = [r for r in ORDER if os.path.exists(os.path.join(results, r, "run-summary
 data = {}
 for run in runs:
     s, h = summary(run), history(run)
-    travel = np.array([float(r["punch_travel"]) for r in h])
+    travel = np.array([float(r.get("force_travel", r["punch_travel"])) for r in h])
     force = np.array([float(r["punch_force"]) for r in h])
     i = int(force.argmax())
     t20, f20 = record_at(run, 20.0)

@@ -20,6 +20,7 @@ namespace formsolve
     {
       ContactStatistics<dim> s;
       s.tool_force.resize(tools.size());
+      s.force_travel = tools.punch_travel();
       s.tool_max_penetration.assign(tools.size(), 0.);
       double sum_penetration = 0;
       double eps_min = std::numeric_limits<double>::max(), eps_max = 0;

@@ -41,7 +41,8 @@ namespace formsolve
                                       "time_step",
                                       "cutbacks",
                                       "punch_travel",
-                                      "punch_force"};
+                                      "punch_force",
+                                      "force_travel"};
         for (unsigned int t = 0; t < tools.size(); ++t)
           c.push_back("force_" + tools.key(t));
         if (tools.holder_index() != tools::ToolSet<dim>::none)
@@ -112,6 +113,7 @@ namespace formsolve
       table.set("punch_travel", tools.punch_travel());
       // Axial (z) forces of the sheet on the tools, full part, pressing = +.
       table.set("punch_force", sym * stats.tool_force[tools.punch_index()][z]);
+      table.set("force_travel", stats.force_travel);
       for (unsigned int t = 0; t < tools.size(); ++t)
         table.set("force_" + tools.key(t),
                   sym * std::abs(stats.tool_force[t][z]));

@@ -360,7 +360,7 @@ namespace formsolve
           if (force > summary.peak_punch_force)
             {
               summary.peak_punch_force  = force;
-              summary.peak_force_travel = travel;
+              summary.peak_force_travel = stats.force_travel;
             }
           summary.max_penetration =
             std::max(summary.max_penetration, stats.max_penetration);

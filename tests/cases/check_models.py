@@ -8,7 +8,8 @@ Usage: check_models.py QUARTER_OUT AXISYMMETRIC_OUT"""
 import csv, os, subprocess, sys
 
 def forces(out):
-    return {round(float(r["punch_travel"]), 6): float(r["punch_force"])
+    # A force acts on the configuration at the start of its step.
+    return {round(float(r["force_travel"]), 6): float(r["punch_force"])
             for r in csv.DictReader(open(os.path.join(out, "history.csv")))}
 
 quarter, axi = forces(sys.argv[1]), forces(sys.argv[2])

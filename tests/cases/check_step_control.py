@@ -7,14 +7,15 @@ Usage: check_step_control.py OUT REFERENCE_OUT"""
 import csv, os, sys
 
 rows = list(csv.DictReader(open(os.path.join(sys.argv[1], "history.csv"))))
-ref = {round(float(r["punch_travel"]), 6): float(r["punch_force"])
+# A force acts on the configuration at the start of its step (force_travel).
+ref = {round(float(r["force_travel"]), 6): float(r["punch_force"])
        for r in csv.DictReader(open(os.path.join(sys.argv[2], "history.csv")))}
 cuts = sum(int(float(r["cutbacks"])) for r in rows)
 print(f"{len(rows)} steps, {cuts} cut(s); time steps {[r['time_step'] for r in rows]}")
 ok = cuts > 0 and abs(float(rows[-1]["punch_travel"]) - 3) < 1e-9
 worst = 0
 for r in rows:
-    t = round(float(r["punch_travel"]), 6)
+    t = round(float(r["force_travel"]), 6)
     if t in ref:
         worst = max(worst, abs(float(r["punch_force"]) / ref[t] - 1))
 print(f"worst relative force difference to the reference {worst:.2e} (limit 1e-2)")

@@ -17,14 +17,17 @@ namespace formsolve
     {
       /// Force of the sheet on each tool (N), modelled part.
       std::vector<Tensor<1, dim>> tool_force;
-      std::vector<double>         tool_max_penetration; // mm, per tool, >= 0
-      double                      max_penetration  = 0; // mm, >= 0
-      double                      mean_penetration = 0; // mm, active pairs
-      unsigned int                n_active         = 0;
-      unsigned int n_over_allowed = 0; // active pairs deeper than delta
-      unsigned int n_locked       = 0; // pairs whose status was locked
-      double       min_factor     = 0; // N/mm, over active pairs
-      double       max_factor     = 0;
+      /// Punch travel (mm) of the configuration the forces act on: the
+      /// start of the step, on which the velocities were solved.
+      double              force_travel = 0;
+      std::vector<double> tool_max_penetration; // mm, per tool, >= 0
+      double              max_penetration  = 0; // mm, >= 0
+      double              mean_penetration = 0; // mm, active pairs
+      unsigned int        n_active         = 0;
+      unsigned int        n_over_allowed = 0; // active pairs deeper than delta
+      unsigned int        n_locked       = 0; // pairs whose status was locked
+      double              min_factor     = 0; // N/mm, over active pairs
+      double              max_factor     = 0;
     };
 
     /// Forces from the contact law with factors @p epsilon (one per pair)
