@@ -262,6 +262,13 @@ namespace formsolve
     }
 
     template <int dim>
+    double FormingSystem<dim>::extra_residual_norm() const
+    {
+      // rho is a force (N), as the nodal entries of r.
+      return holder_controlled() ? std::abs(holder.residual()) : 0.;
+    }
+
+    template <int dim>
     double FormingSystem<dim>::extra_correction() const
     {
       return holder_controlled()

@@ -30,6 +30,11 @@ namespace formsolve
       if (const double r_new = system.update_penalty(); r_new >= 0)
         r = r_new;
       system.contact_set_changed(); // reset: compare from here on
+      // Merit of the line search: body and extra equations together.
+      const auto merit = [&system](const double r_body) {
+        return std::hypot(r_body, system.extra_residual_norm());
+      };
+      double m = merit(r);
       log << "      it  0    |r|/|f|=" << std::scientific
           << std::setprecision(2) << r / std::max(system.force_scale(), 1e-300)
           << std::defaultfloat << system.iteration_info() << std::endl;
@@ -72,16 +77,17 @@ namespace formsolve
 
           // Line search on the directional derivative g(alpha) = dv . r(v +
           // alpha dv) of the (for frictionless contact convex) potential:
-          // accept a trial with a smaller |r| whose |g| has dropped enough or
-          // that still descends (g < 0); regula falsi towards g = 0 where g
-          // turned positive; halve the step where g < 0 but |r| grew. The
+          // accept a trial with a smaller merit |(r, extra residual)| whose
+          // |g| has dropped enough or that still descends (g < 0); regula
+          // falsi towards g = 0 where g turned positive; halve the step where
+          // g < 0 but the merit grew. The
           // full step assembles the matrix with the residual (it serves the
           // next iteration when accepted); shorter trials the residual only,
           // and the accepted one its matrix afterwards.
           const bool next_newton = fallback == 0 && it >= prm.picard_iterations;
           bool       stalled = false, with_matrix = true;
           const double g0    = system.directional_derivative(dv);
-          double       alpha = 1, r_trial = 0;
+          double       alpha = 1, r_trial = 0, m_trial = 0;
           for (unsigned int ls = 0;; ++ls)
             {
               trial = v;
@@ -90,9 +96,10 @@ namespace formsolve
               with_matrix    = ls == 0;
               r_trial        = with_matrix ? system.assemble(trial, next_newton)
                                            : system.assemble_residual(trial);
+              m_trial        = merit(r_trial);
               const double g = system.directional_derivative(dv);
               if (!(g0 < 0) ||
-                  (r_trial < r && (g < 0 || std::abs(g) <= 0.5 * std::abs(g0))))
+                  (m_trial < m && (g < 0 || std::abs(g) <= 0.5 * std::abs(g0))))
                 break;
               if (ls >= prm.max_line_search_steps)
                 {
@@ -133,6 +140,7 @@ namespace formsolve
           const double dv_rel =
             alpha * dv.l2_norm() / std::max(v.l2_norm(), 1e-300);
           r               = r_trial;
+          m               = merit(r);
           report.residual = r / std::max(scale, 1e-300);
           log << "      it " << std::setw(2) << it << (picard ? " P" : " N")
               << "  |r|/|f|=" << std::scientific << std::setprecision(2)

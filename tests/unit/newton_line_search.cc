@@ -1,13 +1,20 @@
-// The Newton line search on a system built to trap it: along the solver's
-// direction the directional derivative g(alpha) = dv.r(v + alpha dv) is still
-// negative at the full step while |r| has doubled (2.06 from 1). The step must
-// not be accepted there: the accepted iterate has a smaller |r| than the start,
-// and the residual-only trials assemble no matrix.
+// The Newton line search on systems built to trap it.
+// 1. Along the solver's direction the directional derivative
+//    g(alpha) = dv.r(v + alpha dv) is still negative at the full step while
+//    |r| has doubled (2.06 from 1). The step must not be accepted there: the
+//    accepted iterate has a smaller |r| than the start, and the
+//    residual-only trials assemble no matrix.
+// 2. An extra unknown (as the blank holder's velocity under force control)
+//    whose equation alone is off at the start, with the body in equilibrium:
+//    the exact Newton step must be taken whole (the line search measures the
+//    body and the extra residual together, not |r| of the body alone).
 #include <deal.II/base/mpi.h>
 
 #include <formsolve/solver/newton_solver.h>
 
 #include "check.h"
+
+#include <cmath>
 
 using namespace formsolve;
 
@@ -58,6 +65,51 @@ namespace
     }
     VectorType r;
   };
+
+  // Body r(x, w) = x - w, extra rho(x, w) = w - 1, from (0, 0): the body is
+  // in equilibrium, rho = -1; Newton: dw = 1, dx = 1, exact at alpha = 1.
+  class ExtraUnknownSystem : public solver::NonlinearSystem
+  {
+  public:
+    explicit ExtraUnknownSystem(const dealii::IndexSet &owned)
+        : r(owned, MPI_COMM_WORLD)
+    {}
+    double assemble(const VectorType &v, const bool /*newton*/) override
+    {
+      x    = v[0];
+      r[0] = x - w_trial;
+      r.compress(dealii::VectorOperation::insert);
+      return r.l2_norm();
+    }
+    double force_scale() const override { return 1; }
+    double directional_derivative(const VectorType &dv) const override
+    {
+      return r * dv + dw * rho();
+    }
+    unsigned int solve(VectorType &dv) override
+    {
+      dw    = -rho();
+      dv    = 0;
+      dv[0] = -r[0] + dw;
+      dv.compress(dealii::VectorOperation::insert);
+      return 1;
+    }
+    void set_step_length(const double alpha) override
+    {
+      w_trial = w + alpha * dw;
+    }
+    void   accept_step() override { w = w_trial; }
+    double extra_residual() const override { return std::abs(rho()); }
+    double extra_residual_norm() const override { return std::abs(rho()); }
+    bool   contact_set_changed() override { return false; }
+
+    double w = 0, w_trial = 0;
+
+  private:
+    double     rho() const { return w_trial - 1; }
+    double     x = 0, dw = 0;
+    VectorType r;
+  };
 } // namespace
 
 int main(int argc, char **argv)
@@ -81,5 +133,15 @@ int main(int argc, char **argv)
   // the half step assembled its residual only.
   test::close("matrix assemblies", system.assemblies, 3, 0);
   test::close("residual-only assemblies", system.residual_assemblies, 1, 0);
+
+  dealii::IndexSet one(1);
+  one.add_range(0, 1);
+  ExtraUnknownSystem                  extra(one);
+  solver::NonlinearSystem::VectorType x(one, MPI_COMM_WORLD);
+  newton.solve(extra, x);
+  std::cout << "extra unknown: x = " << x[0] << ", w = " << extra.w
+            << std::endl;
+  test::close("extra unknown: the whole Newton step", extra.w, 1, 1e-12);
+  test::close("extra unknown: body follows", x[0], 1, 1e-12);
   return test::result();
 }

@@ -63,6 +63,7 @@ namespace formsolve
       /// Forget the linearisation point of the stress-velocity tangent (a
       /// rejected step).
       double extra_residual() const override;
+      double extra_residual_norm() const override;
       double extra_correction() const override;
 
     private:

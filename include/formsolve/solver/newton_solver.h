@@ -48,6 +48,10 @@ namespace formsolve
       virtual void accept_step() {}
       /// Relative residual and correction of the extra equations (0 if none).
       virtual double extra_residual() const { return 0; }
+      /// Residual of the extra equations at the last assembly in the units of
+      /// |r| (0 if none). The line search decreases |(r, this)|: with |r|
+      /// alone a step that moves only the extra unknowns can never be taken.
+      virtual double extra_residual_norm() const { return 0; }
       virtual double extra_correction() const { return 0; }
       /// Whether the contact set changed since the previous call.
       virtual bool contact_set_changed() = 0;
