@@ -14,6 +14,73 @@ namespace formsolve
   {
     using namespace dealii;
 
+    namespace
+    {
+      /// Whether @p dof hangs (a constraint with masters; not a Dirichlet or
+      /// symmetry line).
+      bool hanging(const AffineConstraints<double> &c,
+                   const types::global_dof_index    dof)
+      {
+        const auto *entries = c.get_constraint_entries(dof);
+        return entries != nullptr && !entries->empty();
+      }
+
+      /// At hanging nodes the body residual has no entry (condensed into the
+      /// masters), so their estimate sees no force and would sink to the
+      /// lower bound: there the factor per area (N/mm^3) is interpolated
+      /// from the masters' active pairs, as any constrained field.
+      template <int dim>
+      void interpolate_hanging(const ContactSet<dim>               &set,
+                               const AffineConstraints<double>     &constraints,
+                               const TrilinosWrappers::MPI::Vector &layout,
+                               std::vector<bool>                   &is_hanging,
+                               std::vector<double>                 &epsilon)
+      {
+        const unsigned int n = set.pairs.size();
+        is_hanging.assign(n, false);
+        for (unsigned int k = 0; k < n; ++k)
+          is_hanging[k] =
+            hanging(constraints, set.nodes[set.pairs[k].node].dofs[dim - 1]);
+        const MPI_Comm comm = layout.get_mpi_communicator();
+        if (Utilities::MPI::max(
+              int(std::count(is_hanging.begin(), is_hanging.end(), true)),
+              comm) == 0)
+          return;
+        // Factor per area of the active, not hanging pairs at their nodes.
+        TrilinosWrappers::MPI::Vector per_area(layout);
+        per_area = 0;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            const auto &pair = set.pairs[k];
+            if (pair.active && !is_hanging[k] && pair.area > 0)
+              per_area[set.nodes[pair.node].dofs[dim - 1]] =
+                std::max(double(per_area[set.nodes[pair.node].dofs[dim - 1]]),
+                         epsilon[k] / pair.area);
+          }
+        per_area.compress(VectorOperation::insert);
+        TrilinosWrappers::MPI::Vector ghosted(layout.locally_owned_elements(),
+                                              constraints.get_local_lines(),
+                                              comm);
+        ghosted = per_area;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            if (!is_hanging[k])
+              continue;
+            const auto &dof = set.nodes[set.pairs[k].node].dofs[dim - 1];
+            double      sum = 0, weight = 0;
+            for (const auto &[master, c] :
+                 *constraints.get_constraint_entries(dof))
+              if (const double q = ghosted[master]; q > 0)
+                {
+                  sum += std::abs(c) * q;
+                  weight += std::abs(c);
+                }
+            if (weight > 0)
+              epsilon[k] = sum / weight * set.pairs[k].area;
+          }
+      }
+    } // namespace
+
     template <int dim>
     AdaptivePenalty<dim>::AdaptivePenalty(const parameters::Contact &p,
                                           const bool                 strict)
@@ -77,6 +144,7 @@ namespace formsolve
       system.constraints->set_zero(w);
 
       epsilon.resize(n);
+      std::vector<double> stiffness_of(n, 0.);
       min_factor = std::numeric_limits<double>::max();
       max_factor = 0;
       max_ratio  = 0;
@@ -112,15 +180,29 @@ namespace formsolve
             last = eps;
           // The strict scale acts within the bounds: Upper bound bounds it.
           epsilon[k] = reuse ? last_epsilon[k] : bounded(eps * record.scale);
-          if (active[k])
-            {
-              ++n_active;
-              min_factor = std::min(min_factor, epsilon[k]);
-              max_factor = std::max(max_factor, epsilon[k]);
-              if (stiffness > 0)
-                max_ratio = std::max(max_ratio, epsilon[k] / stiffness);
-            }
+          stiffness_of[k] = stiffness;
         }
+      if (!reuse)
+        {
+          std::vector<bool> is_hanging;
+          interpolate_hanging(set,
+                              *system.constraints,
+                              *system.residual,
+                              is_hanging,
+                              epsilon);
+          for (unsigned int k = 0; k < n; ++k)
+            if (is_hanging[k])
+              state(set.pairs[k].node, set.pairs[k].tool).factor = epsilon[k];
+        }
+      for (unsigned int k = 0; k < n; ++k)
+        if (active[k])
+          {
+            ++n_active;
+            min_factor = std::min(min_factor, epsilon[k]);
+            max_factor = std::max(max_factor, epsilon[k]);
+            if (stiffness_of[k] > 0)
+              max_ratio = std::max(max_ratio, epsilon[k] / stiffness_of[k]);
+          }
       min_factor = Utilities::MPI::min(min_factor, comm);
       max_factor = Utilities::MPI::max(max_factor, comm);
       max_ratio  = Utilities::MPI::max(max_ratio, comm);
