@@ -4,7 +4,7 @@
 # 4 layers), for the penalty strategies fixed (1e5 N/mm^3), adaptive and
 # adaptive-strict (delta = 1e-3 mm); writes doc/convergence.csv,
 # doc/convergence-histogram.png and the tables for doc/convergence.md.
-# Usage: bash benchmarks/convergence.sh [--force] [--exe PATH --tag NAME]
+# Usage: [REPORT_TAGS="before ..."] bash benchmarks/convergence.sh [--force] [--exe PATH --tag NAME]
 #   runs are kept in results/convergence/<tag>/ and reused unless --force;
 #   --exe/--tag run another build (e.g. an older commit's) under its own tag.
 # 3-D runs use RANKS (default 1) MPI ranks.
@@ -52,7 +52,11 @@ for model in axisymmetric quarter; do
   run "$model-adaptive" "$n" cup-drawing.prm "${sets[@]}" "${adaptive[@]}"
   run "$model-adaptive-strict" "$n" cup-drawing.prm "${sets[@]}"
 done
-if [ -d "$root/results/convergence/before" ] && [ "$tag" = current ]; then
+# Earlier builds' runs, oldest first (REPORT_TAGS, default "before"), then
+# this build's.
+if [ "$tag" = current ]; then
+  tags=()
+  for t in ${REPORT_TAGS:-before}; do [ -d "$out/../$t" ] && tags+=("$t"); done
   /usr/bin/python3 "$root/benchmarks/convergence_report.py" "$root/results/convergence" \
-    "$root/doc" before current
+    "$root/doc" "${tags[@]}" current
 fi

@@ -1,6 +1,7 @@
 """Tables and a histogram of Newton iterations per step from the runs of
 benchmarks/convergence.sh: results/convergence/<tag>/<model>-<strategy>/.
-Usage: convergence_report.py RESULTS_DIR DOC_DIR TAG_BEFORE TAG_AFTER"""
+Usage: convergence_report.py RESULTS_DIR DOC_DIR TAG [TAG ...]
+(oldest first; the table shows each figure as old → ... → newest)"""
 import csv
 import os
 import sys
@@ -10,7 +11,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-results, doc, before, after = sys.argv[1:5]
+results, doc, tags = sys.argv[1], sys.argv[2], sys.argv[3:]
 runs = [f"{m}-{s}" for m in ("axisymmetric", "quarter")
         for s in ("fixed", "adaptive", "adaptive-strict")]
 
@@ -47,7 +48,7 @@ def load(tag, run):
     }
 
 
-data = {(t, r): load(t, r) for t in (before, after) for r in runs}
+data = {(t, r): load(t, r) for t in tags for r in runs}
 with open(os.path.join(doc, "convergence.csv"), "w") as f:
     w = csv.writer(f)
     w.writerow(["run", "tag", "steps", "newton_iterations", "mean_per_step",
@@ -55,7 +56,7 @@ with open(os.path.join(doc, "convergence.csv"), "w") as f:
                 "matrix_assemblies", "wall_time_s", "peak_force_kN",
                 "max_penetration_mm", "final_travel_mm"])
     for r in runs:
-        for t in (before, after):
+        for t in tags:
             d = data[(t, r)]
             w.writerow([r, t, d["steps"], d["total"], f"{d['mean']:.2f}",
                         d["first"], d["max"], d["over15"], d["passes"],
@@ -63,20 +64,27 @@ with open(os.path.join(doc, "convergence.csv"), "w") as f:
                         f"{d['peak']:.3f}", f"{d['pen']:.3e}",
                         f"{d['travel']:.2f}"])
 
-print("| run | iterations/step before → after | first step | largest step | steps > 15 | strict passes | matrix assemblies / iteration | wall time (s) | peak force (kN) | max penetration (mm) |")
+def chain(r, key, fmt="{}"):
+    return " → ".join(fmt.format(data[(t, r)][key]) for t in tags)
+
+
+print(f"| run ({' → '.join(tags)}) | iterations/step | first step | largest step | steps > 15 | strict passes | matrix assemblies / iteration | wall time (s) | peak force (kN) | max penetration (mm) |")
 print("|---|---|---|---|---|---|---|---|---|---|")
 for r in runs:
-    b, a = data[(before, r)], data[(after, r)]
-    print(f"| {r} | {b['mean']:.2f} → **{a['mean']:.2f}** | {b['first']} → {a['first']} "
-          f"| {b['max']} → {a['max']} | {b['over15']} → {a['over15']} "
-          f"| {b['passes']} → {a['passes']} | {a['assemblies'] / a['total']:.2f} "
-          f"| {b['wall']:.1f} → {a['wall']:.1f} | {b['peak']:.3f} → {a['peak']:.3f} "
-          f"| {b['pen']:.2e} → {a['pen']:.2e} |")
+    a = data[(tags[-1], r)]
+    assemblies = " → ".join(f"{data[(t, r)]['assemblies'] / data[(t, r)]['total']:.2f}"
+                            if data[(t, r)]["assemblies"] else "–" for t in tags)
+    print(f"| {r} | {chain(r, 'mean', '{:.2f}')} | {chain(r, 'first')} "
+          f"| {chain(r, 'max')} | {chain(r, 'over15')} "
+          f"| {chain(r, 'passes')} | {assemblies} "
+          f"| {chain(r, 'wall', '{:.1f}')} | {chain(r, 'peak', '{:.3f}')} "
+          f"| {chain(r, 'pen', '{:.2e}')} |")
 
 fig, axes = plt.subplots(2, 3, figsize=(13, 6.5), sharex=True)
 bins = range(0, 52)
 for ax, r in zip(axes.flat, runs):
-    for t, c in ((before, "tab:gray"), (after, "tab:blue")):
+    colours = ("tab:gray", "tab:orange", "tab:blue", "tab:green")
+    for t, c in zip(tags, colours[len(colours) - len(tags):] if len(tags) < 4 else colours):
         d = data[(t, r)]
         ax.hist([min(i, 50) for i in d["its"]], bins=bins, color=c, alpha=0.6,
                 label=f"{t}: {d['mean']:.1f}/step")
