@@ -202,6 +202,22 @@ namespace formsolve
         "condition number (history.csv column condition_estimate; a lower "
         "bound, meaningful for symmetric systems, i.e. without friction). "
         "0: off.");
+      prm.declare_entry(
+        "Reuse factorisation iterations",
+        "0",
+        Integer(0, 1000),
+        "Direct solver: solve a new matrix by GMRES preconditioned with the "
+        "last numeric factorisation (of an earlier Newton iteration or step) "
+        "while GMRES converges within this many iterations; otherwise, or "
+        "when the sparsity pattern changed, factorise afresh. 0: a fresh "
+        "factorisation for every matrix.");
+      prm.declare_entry(
+        "Reuse tolerance",
+        "1e-10",
+        Double(0),
+        "Relative residual |b - A x|/|b| that GMRES with a reused "
+        "factorisation must reach (-); a fresh factorisation solves to "
+        "round-off.");
       prm.leave_subsection();
     }
 
@@ -218,6 +234,8 @@ namespace formsolve
       tolerance            = prm.get_double("Tolerance");
       max_iterations       = prm.get_integer("Max iterations");
       condition_iterations = prm.get_integer("Condition estimate iterations");
+      reuse_iterations     = prm.get_integer("Reuse factorisation iterations");
+      reuse_tolerance      = prm.get_double("Reuse tolerance");
       prm.leave_subsection();
     }
 
@@ -225,6 +243,9 @@ namespace formsolve
     {
       require(tolerance > 0 && tolerance < 1,
               "Linear solver/Tolerance",
+              "must lie in (0, 1)");
+      require(reuse_tolerance > 0 && reuse_tolerance < 1,
+              "Linear solver/Reuse tolerance",
               "must lie in (0, 1)");
     }
   } // namespace parameters

@@ -319,6 +319,7 @@ namespace formsolve
           summary.newton_iterations += report.iterations;
           summary.linear_iterations += report.linear_iterations;
           summary.matrix_assemblies += report.matrix_assemblies;
+          summary.factorisations += report.factorisations;
           summary.cutbacks += report.cutbacks;
           if (!report.converged)
             {

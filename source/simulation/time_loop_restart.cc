@@ -52,6 +52,7 @@ namespace formsolve
         {"summary.newton_iterations", std::to_string(s.newton_iterations)},
         {"summary.linear_iterations", std::to_string(s.linear_iterations)},
         {"summary.matrix_assemblies", std::to_string(s.matrix_assemblies)},
+        {"summary.factorisations", std::to_string(s.factorisations)},
         {"summary.cutbacks", std::to_string(s.cutbacks)},
         {"summary.newton_wall_time", exact_text(s.newton_wall_time)},
         {"summary.wall_time", exact_text(s.wall_time)},
@@ -80,6 +81,9 @@ namespace formsolve
       // Absent in checkpoints written before it was counted.
       s.matrix_assemblies  = m.count("summary.matrix_assemblies")
                                ? std::stoul(m.at("summary.matrix_assemblies"))
+                               : 0;
+      s.factorisations     = m.count("summary.factorisations")
+                               ? std::stoul(m.at("summary.factorisations"))
                                : 0;
       s.cutbacks           = std::stoul(m.at("summary.cutbacks"));
       s.newton_wall_time   = std::stod(m.at("summary.newton_wall_time"));

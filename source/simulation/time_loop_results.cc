@@ -112,6 +112,7 @@ namespace formsolve
         << "\nnewton_iterations = " << summary.newton_iterations
         << "\nlinear_iterations = " << summary.linear_iterations
         << "\nmatrix_assemblies = " << summary.matrix_assemblies
+        << "\nfactorisations = " << summary.factorisations
         << "\ncutbacks = " << summary.cutbacks
         << "\nwall_time = " << summary.wall_time
         << "\nnewton_wall_time = " << summary.newton_wall_time

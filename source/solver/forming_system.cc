@@ -207,8 +207,9 @@ namespace formsolve
       TimerOutput::Scope t(timer, "linear solve");
       VectorType         rhs(residual);
       rhs *= -1.;
-      unsigned int its = linear_solver->solve(matrix, dv, rhs);
-      dw               = 0;
+      const unsigned long factorised = linear_solver->factorisations();
+      unsigned int        its        = linear_solver->solve(matrix, dv, rhs);
+      dw                             = 0;
       if (holder_controlled())
         {
           if (holder.engaged())
@@ -224,6 +225,7 @@ namespace formsolve
                                              state.tools.holder_index()),
                                            dt);
         }
+      n_factorisations += linear_solver->factorisations() - factorised;
       step_max_linear = std::max(step_max_linear, its);
       step_condition =
         std::max(step_condition, linear_solver->condition_estimate());

@@ -61,8 +61,19 @@ namespace formsolve
       if (prm.type == parameters::LinearSolverType::direct)
         {
           auto &matrix = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
-          if (factorised_matrix != &matrix ||
-              factorised_nnz != A.n_nonzero_elements())
+          const bool same_pattern = factorised_matrix == &matrix &&
+                                    factorised_nnz == A.n_nonzero_elements();
+          if (same_pattern && n_factorisations > 0 && prm.reuse_iterations > 0)
+            {
+              unsigned int its = 0;
+              if (reuse(A, x, b, its))
+                {
+                  factors_current = false;
+                  return its;
+                }
+              x = 0;
+            }
+          if (!same_pattern)
             {
               problem = std::make_unique<Epetra_LinearProblem>();
               problem->SetOperator(&matrix);
@@ -83,7 +94,10 @@ namespace formsolve
           AssertThrow(direct->NumericFactorization() == 0,
                       ExcMessage(
                         "numeric factorisation failed (singular matrix?)"));
-          return solve_again(x, b);
+          ++n_factorisations;
+          factors_current = true;
+          substitute(x, b);
+          return 1;
         }
 
       amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
@@ -97,6 +111,51 @@ namespace formsolve
       return iterate(A, x, b);
     }
 
+    void LinearSolver::substitute(TrilinosWrappers::MPI::Vector       &x,
+                                  const TrilinosWrappers::MPI::Vector &b)
+    {
+      problem->SetLHS(&x.trilinos_vector());
+      problem->SetRHS(const_cast<Epetra_MultiVector *>(&b.trilinos_vector()));
+      AssertThrow(direct->Solve() == 0, ExcMessage("direct solve failed"));
+    }
+
+    bool LinearSolver::reuse(const TrilinosWrappers::SparseMatrix &A,
+                             TrilinosWrappers::MPI::Vector        &x,
+                             const TrilinosWrappers::MPI::Vector  &b,
+                             unsigned int                         &iterations)
+    {
+      // The factors live in the solver (MUMPS, KLU), not in A: they stay
+      // those of the matrix values at the last factorisation.
+      struct Factors
+      {
+        LinearSolver *solver;
+        void          vmult(TrilinosWrappers::MPI::Vector       &dst,
+                            const TrilinosWrappers::MPI::Vector &src) const
+        {
+          solver->substitute(dst, src);
+        }
+      } factors{this};
+      SolverControl                              control(prm.reuse_iterations,
+                            prm.reuse_tolerance * b.l2_norm(),
+                            false,
+                            false);
+      SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+        control,
+        SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+          prm.reuse_iterations + 2,
+          true)); // right preconditioning: the true residual is tested
+      try
+        {
+          gmres.solve(A, x, b, factors);
+        }
+      catch (const SolverControl::NoConvergence &)
+        {
+          return false;
+        }
+      iterations = control.last_step();
+      return true;
+    }
+
     unsigned int
     LinearSolver::solve_again(TrilinosWrappers::MPI::Vector       &x,
                               const TrilinosWrappers::MPI::Vector &b)
@@ -104,10 +163,23 @@ namespace formsolve
       Assert(last_matrix != nullptr, ExcInternalError());
       if (prm.type == parameters::LinearSolverType::direct)
         {
-          problem->SetLHS(&x.trilinos_vector());
-          problem->SetRHS(
-            const_cast<Epetra_MultiVector *>(&b.trilinos_vector()));
-          AssertThrow(direct->Solve() == 0, ExcMessage("direct solve failed"));
+          if (factors_current)
+            {
+              substitute(x, b);
+              return 1;
+            }
+          // The matrix of the last solve was not factorised: the same GMRES,
+          // else its own factorisation.
+          unsigned int its = 0;
+          if (reuse(*last_matrix, x, b, its))
+            return its;
+          x = 0;
+          AssertThrow(direct->NumericFactorization() == 0,
+                      ExcMessage(
+                        "numeric factorisation failed (singular matrix?)"));
+          ++n_factorisations;
+          factors_current = true;
+          substitute(x, b);
           return 1;
         }
       return iterate(*last_matrix, x, b);

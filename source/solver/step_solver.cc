@@ -32,6 +32,7 @@ namespace formsolve
     {
       StepReport          report;
       const unsigned long assemblies = system.matrix_assemblies();
+      const unsigned long factorised = system.factorisations();
       control.begin_step();
       state.update_contact_areas();
       for (;;)
@@ -68,6 +69,7 @@ namespace formsolve
                 break;
             }
           report.matrix_assemblies = system.matrix_assemblies() - assemblies;
+          report.factorisations    = system.factorisations() - factorised;
           report.iterations += attempt.iterations;
           report.linear_iterations += attempt.linear_iterations;
           report.picard_iterations += attempt.picard_iterations;

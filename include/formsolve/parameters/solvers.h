@@ -79,6 +79,10 @@ namespace formsolve
       double           tolerance            = 1e-8;
       unsigned int     max_iterations       = 2000;
       unsigned int     condition_iterations = 0; // Lanczos estimate, 0: off
+      /// Direct: GMRES iterations allowed with an older factorisation as
+      /// preconditioner before refactorising; 0: factorise every matrix.
+      unsigned int reuse_iterations = 0;
+      double       reuse_tolerance  = 1e-10; // relative residual of that GMRES
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);

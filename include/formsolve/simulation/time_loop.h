@@ -36,6 +36,7 @@ namespace formsolve
       unsigned int newton_iterations = 0;
       unsigned int linear_iterations = 0;
       unsigned int matrix_assemblies = 0; // tangent assemblies
+      unsigned int factorisations    = 0; // numeric, direct solver
       unsigned int cutbacks          = 0;
       double       wall_time         = 0;
       double       newton_wall_time  = 0; // spent inside Newton iterations

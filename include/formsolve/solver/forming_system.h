@@ -48,6 +48,8 @@ namespace formsolve
       /// Matrix assemblies since the start (line-search trials assemble the
       /// residual only).
       unsigned long matrix_assemblies() const { return n_matrix_assemblies; }
+      /// Numeric factorisations of the direct solver since the start.
+      unsigned long factorisations() const { return n_factorisations; }
 
       // NonlinearSystem
       double       assemble(const VectorType &v, const bool newton) override;
@@ -104,6 +106,7 @@ namespace formsolve
       unsigned int  step_max_linear = 0;
       double        step_condition  = 0;
       unsigned long n_matrix_assemblies = 0;
+      unsigned long n_factorisations    = 0;
     };
   } // namespace solver
 } // namespace formsolve

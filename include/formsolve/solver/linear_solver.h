@@ -40,6 +40,9 @@ namespace formsolve
       unsigned int solve_again(dealii::TrilinosWrappers::MPI::Vector       &x,
                                const dealii::TrilinosWrappers::MPI::Vector &b);
 
+      /// Numeric factorisations since construction (direct solver).
+      unsigned long factorisations() const { return n_factorisations; }
+
       /// Lanczos estimate of cond(A) from the last solve ('Condition estimate
       /// iterations' CG steps without preconditioner), 0 if off.
       double condition_estimate() const { return last_condition; }
@@ -54,6 +57,20 @@ namespace formsolve
       const void                                   *factorised_matrix = nullptr;
       unsigned long long                            factorised_nnz    = 0;
       double                                        last_condition    = 0;
+      unsigned long                                 n_factorisations  = 0;
+      /// The factorisation is that of last_matrix's current values (else it
+      /// is an older one, used as a preconditioner).
+      bool factors_current = false;
+
+      /// Direct with reuse: GMRES on @p A preconditioned by the stored
+      /// factorisation; false if it does not converge within the limit.
+      bool reuse(const dealii::TrilinosWrappers::SparseMatrix &A,
+                 dealii::TrilinosWrappers::MPI::Vector        &x,
+                 const dealii::TrilinosWrappers::MPI::Vector  &b,
+                 unsigned int                                 &iterations);
+      /// One forward and back substitution with the stored factorisation.
+      void substitute(dealii::TrilinosWrappers::MPI::Vector       &x,
+                      const dealii::TrilinosWrappers::MPI::Vector &b);
 
       unsigned int iterate(const dealii::TrilinosWrappers::SparseMatrix &A,
                            dealii::TrilinosWrappers::MPI::Vector        &x,

@@ -31,6 +31,7 @@ namespace formsolve
       unsigned int picard_iterations     = 0;
       unsigned int passes                = 0; // strict / Uzawa re-solves
       unsigned int matrix_assemblies     = 0; // tangent assemblies, all tries
+      unsigned int factorisations        = 0; // numeric, all tries
       unsigned int max_linear_iterations = 0;
       double       condition_estimate    = 0;
       double       residual              = 0; // |r|/|f| of the last try
