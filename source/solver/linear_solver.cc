@@ -91,13 +91,7 @@ namespace formsolve
               factorised_matrix = &matrix;
               factorised_nnz    = A.n_nonzero_elements();
             }
-          AssertThrow(direct->NumericFactorization() == 0,
-                      ExcMessage(
-                        "numeric factorisation failed (singular matrix?)"));
-          ++n_factorisations;
-          factors_current = true;
-          substitute(x, b);
-          return 1;
+          return factorise_and_substitute(x, b);
         }
 
       amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
@@ -109,6 +103,19 @@ namespace formsolve
       data.constant_modes        = constant_modes;
       amg->initialize(A, data);
       return iterate(A, x, b);
+    }
+
+    unsigned int LinearSolver::factorise_and_substitute(
+      TrilinosWrappers::MPI::Vector       &x,
+      const TrilinosWrappers::MPI::Vector &b)
+    {
+      AssertThrow(direct->NumericFactorization() == 0,
+                  ExcMessage(
+                    "numeric factorisation failed (singular matrix?)"));
+      ++n_factorisations;
+      factors_current = true;
+      substitute(x, b);
+      return 1;
     }
 
     void LinearSolver::substitute(TrilinosWrappers::MPI::Vector       &x,
@@ -174,13 +181,7 @@ namespace formsolve
           if (reuse(*last_matrix, x, b, its))
             return its;
           x = 0;
-          AssertThrow(direct->NumericFactorization() == 0,
-                      ExcMessage(
-                        "numeric factorisation failed (singular matrix?)"));
-          ++n_factorisations;
-          factors_current = true;
-          substitute(x, b);
-          return 1;
+          return factorise_and_substitute(x, b);
         }
       return iterate(*last_matrix, x, b);
     }

@@ -68,6 +68,11 @@ namespace formsolve
                  dealii::TrilinosWrappers::MPI::Vector        &x,
                  const dealii::TrilinosWrappers::MPI::Vector  &b,
                  unsigned int                                 &iterations);
+      /// Numeric factorisation of the operator's current values, then one
+      /// substitution; returns 1.
+      unsigned int
+      factorise_and_substitute(dealii::TrilinosWrappers::MPI::Vector       &x,
+                               const dealii::TrilinosWrappers::MPI::Vector &b);
       /// One forward and back substitution with the stored factorisation.
       void substitute(dealii::TrilinosWrappers::MPI::Vector       &x,
                       const dealii::TrilinosWrappers::MPI::Vector &b);
