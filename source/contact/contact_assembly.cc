@@ -18,6 +18,7 @@ namespace formsolve
                            const double                     v0,
                            const double                     dt,
                            const bool                       newton,
+                           const bool                       symmetrise,
                            const AffineConstraints<double> &constraints,
                            TrilinosWrappers::SparseMatrix  *matrix,
                            TrilinosWrappers::MPI::Vector   &residual)
@@ -42,7 +43,9 @@ namespace formsolve
               node_dofs[a] = set.nodes[pair.node].dofs[a];
               rc[a]        = -f.force[a];
               for (unsigned int b = 0; b < dim; ++b)
-                Kc(a, b) = f.stiffness[a][b];
+                Kc(a, b) = symmetrise
+                             ? 0.5 * (f.stiffness[a][b] + f.stiffness[b][a])
+                             : f.stiffness[a][b];
             }
           if (matrix)
             constraints.distribute_local_to_global(Kc,
@@ -64,6 +67,7 @@ namespace formsolve
                                   const tools::ToolSet<dim> &,       \
                                   double,                            \
                                   double,                            \
+                                  bool,                              \
                                   bool,                              \
                                   const AffineConstraints<double> &, \
                                   TrilinosWrappers::SparseMatrix *,  \

@@ -97,6 +97,16 @@ namespace formsolve
         "an unknown of its own at each quadrature point and eliminated "
         "(doc/theory.md, eq. 4b): the same converged solution in fewer "
         "iterations.");
+      prm.declare_entry(
+        "Friction tangent",
+        "exact",
+        Selection("exact|symmetrised"),
+        "Stiffness of the regularised Coulomb friction at a contact node. "
+        "exact: its derivative, not symmetric (the tangential force depends "
+        "on the normal penetration and the slip direction); symmetrised: "
+        "(K + K^T)/2, which lets the linear solver factorise LDL^T (Linear "
+        "solver/Symmetric factorisation) at the cost of an inexact Newton "
+        "step while sliding.");
       prm.declare_entry("Max iterations",
                         "60",
                         Integer(1),
@@ -144,6 +154,7 @@ namespace formsolve
       prm.enter_subsection("Nonlinear solver");
       tangent               = prm.get("Tangent") == "newton" ? Tangent::newton
                                                              : Tangent::stress_velocity;
+      symmetrise_friction   = prm.get("Friction tangent") == "symmetrised";
       max_iterations        = prm.get_integer("Max iterations");
       residual_tolerance    = prm.get_double("Residual tolerance");
       correction_tolerance  = prm.get_double("Correction tolerance");
@@ -171,14 +182,39 @@ namespace formsolve
         "Type",
         "direct",
         Selection("direct|iterative"),
-        "direct: sparse LU through Trilinos Amesos; iterative: a "
+        "direct: a sparse direct solver (Direct solver); iterative: a "
         "Krylov solver with ML algebraic multigrid.");
       prm.declare_entry(
         "Direct solver",
         "MUMPS",
-        Selection("MUMPS|KLU"),
-        "Amesos back end (MUMPS runs in parallel; KLU gathers the "
-        "matrix on one rank).");
+        Selection("MUMPS|Amesos MUMPS|KLU"),
+        "MUMPS: MUMPS called directly, each rank passing its own rows, with "
+        "the options below; Amesos MUMPS: MUMPS through Trilinos Amesos "
+        "(unsymmetric LU, MUMPS's automatic ordering: the earlier default); "
+        "KLU: Amesos KLU, serial (the matrix is gathered on one rank).");
+      prm.declare_entry(
+        "Symmetric factorisation",
+        "true",
+        Bool(),
+        "MUMPS: factorise as LDL^T (one triangle stored, about half the "
+        "memory and time) whenever the tangent is symmetric, i.e. without "
+        "friction or with Nonlinear solver/Friction tangent = symmetrised; "
+        "LU otherwise. false: always LU.");
+      prm.declare_entry(
+        "Ordering",
+        "METIS",
+        Selection("METIS|automatic"),
+        "MUMPS: pivot order. METIS: nested dissection of the matrix graph by "
+        "METIS_NodeND (Debian's MUMPS is built without METIS; the order is "
+        "computed by formsolve and passed in); automatic: MUMPS's own "
+        "choice (PORD on Debian).");
+      prm.declare_entry(
+        "Refinement steps",
+        "0",
+        Integer(0, 100),
+        "MUMPS: at most this many steps of iterative refinement after each "
+        "solve, stopped when the componentwise backward error is at round-off "
+        "(MUMPS ICNTL(10)). 0: none.");
       prm.declare_entry("Iterative solver",
                         "GMRES",
                         Selection("GMRES|CG"),
@@ -224,15 +260,20 @@ namespace formsolve
     void LinearSolver::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Linear solver");
-      type          = prm.get("Type") == "direct" ? LinearSolverType::direct
-                                                  : LinearSolverType::iterative;
-      direct_solver = prm.get("Direct solver") == "MUMPS" ? DirectSolver::mumps
-                                                          : DirectSolver::klu;
-      iterative_solver     = prm.get("Iterative solver") == "CG"
-                               ? IterativeSolver::cg
-                               : IterativeSolver::gmres;
-      tolerance            = prm.get_double("Tolerance");
-      max_iterations       = prm.get_integer("Max iterations");
+      type = prm.get("Type") == "direct" ? LinearSolverType::direct
+                                         : LinearSolverType::iterative;
+      const std::string direct = prm.get("Direct solver");
+      direct_solver            = direct == "MUMPS" ? DirectSolver::mumps
+                                 : direct == "Amesos MUMPS" ? DirectSolver::amesos_mumps
+                                                            : DirectSolver::klu;
+      symmetric_factorisation  = prm.get_bool("Symmetric factorisation");
+      metis_order              = prm.get("Ordering") == "METIS";
+      refinement_steps         = prm.get_integer("Refinement steps");
+      iterative_solver         = prm.get("Iterative solver") == "CG"
+                                   ? IterativeSolver::cg
+                                   : IterativeSolver::gmres;
+      tolerance                = prm.get_double("Tolerance");
+      max_iterations           = prm.get_integer("Max iterations");
       condition_iterations = prm.get_integer("Condition estimate iterations");
       reuse_iterations     = prm.get_integer("Reuse factorisation iterations");
       reuse_tolerance      = prm.get_double("Reuse tolerance");

@@ -320,6 +320,11 @@ namespace formsolve
           summary.linear_iterations += report.linear_iterations;
           summary.matrix_assemblies += report.matrix_assemblies;
           summary.factorisations += report.factorisations;
+          summary.factorisation_memory_mb =
+            std::max(summary.factorisation_memory_mb,
+                     report.factorisation_memory_mb);
+          summary.factor_entries =
+            std::max(summary.factor_entries, report.factor_entries);
           summary.cutbacks += report.cutbacks;
           if (!report.converged)
             {

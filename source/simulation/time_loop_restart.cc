@@ -53,6 +53,9 @@ namespace formsolve
         {"summary.linear_iterations", std::to_string(s.linear_iterations)},
         {"summary.matrix_assemblies", std::to_string(s.matrix_assemblies)},
         {"summary.factorisations", std::to_string(s.factorisations)},
+        {"summary.factorisation_memory_mb",
+         exact_text(s.factorisation_memory_mb)},
+        {"summary.factor_entries", exact_text(s.factor_entries)},
         {"summary.cutbacks", std::to_string(s.cutbacks)},
         {"summary.newton_wall_time", exact_text(s.newton_wall_time)},
         {"summary.wall_time", exact_text(s.wall_time)},
@@ -79,11 +82,18 @@ namespace formsolve
       s.newton_iterations = std::stoul(m.at("summary.newton_iterations"));
       s.linear_iterations = std::stoul(m.at("summary.linear_iterations"));
       // Absent in checkpoints written before it was counted.
-      s.matrix_assemblies  = m.count("summary.matrix_assemblies")
-                               ? std::stoul(m.at("summary.matrix_assemblies"))
-                               : 0;
-      s.factorisations     = m.count("summary.factorisations")
-                               ? std::stoul(m.at("summary.factorisations"))
+      s.matrix_assemblies = m.count("summary.matrix_assemblies")
+                              ? std::stoul(m.at("summary.matrix_assemblies"))
+                              : 0;
+      s.factorisations    = m.count("summary.factorisations")
+                              ? std::stoul(m.at("summary.factorisations"))
+                              : 0;
+      s.factorisation_memory_mb =
+        m.count("summary.factorisation_memory_mb")
+          ? std::stod(m.at("summary.factorisation_memory_mb"))
+          : 0;
+      s.factor_entries     = m.count("summary.factor_entries")
+                               ? std::stod(m.at("summary.factor_entries"))
                                : 0;
       s.cutbacks           = std::stoul(m.at("summary.cutbacks"));
       s.newton_wall_time   = std::stod(m.at("summary.newton_wall_time"));

@@ -113,6 +113,8 @@ namespace formsolve
         << "\nlinear_iterations = " << summary.linear_iterations
         << "\nmatrix_assemblies = " << summary.matrix_assemblies
         << "\nfactorisations = " << summary.factorisations
+        << "\nfactorisation_memory_mb = " << summary.factorisation_memory_mb
+        << "\nfactor_entries = " << summary.factor_entries
         << "\ncutbacks = " << summary.cutbacks
         << "\nwall_time = " << summary.wall_time
         << "\nnewton_wall_time = " << summary.newton_wall_time

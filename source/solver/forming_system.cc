@@ -61,7 +61,18 @@ namespace formsolve
       DoFTools::extract_constant_modes(state.dof_handler,
                                        ComponentMask(dim, true),
                                        modes);
-      linear_solver = std::make_unique<LinearSolver>(prm.linear, modes);
+      // Symmetric tangent: frictionless tools, or the friction stiffness
+      // symmetrised.
+      bool symmetric = prm.nonlinear.symmetrise_friction;
+      if (!symmetric)
+        {
+          symmetric = true;
+          for (unsigned int i = 0; i < state.tools.size(); ++i)
+            symmetric = symmetric && state.tools.friction_coefficient(i) == 0;
+        }
+      linear_solver =
+        std::make_unique<LinearSolver>(prm.linear, modes, symmetric);
+      linear_solver->time_phases(timer);
     }
 
     template <int dim>
@@ -176,6 +187,7 @@ namespace formsolve
                                  prm.contact.regularisation_velocity,
                                  dt,
                                  last_newton,
+                                 prm.nonlinear.symmetrise_friction,
                                  state.constraints,
                                  with_matrix ? &matrix : nullptr,
                                  residual);

@@ -21,12 +21,35 @@ namespace formsolve
     using namespace dealii;
 
     LinearSolver::LinearSolver(const parameters::LinearSolver       &p,
-                               const std::vector<std::vector<bool>> &modes)
+                               const std::vector<std::vector<bool>> &modes,
+                               const bool                            sym)
         : prm(p)
         , constant_modes(modes)
+        , symmetric(sym)
     {}
 
+    double LinearSolver::factorisation_memory_mb() const
+    {
+      return mumps ? mumps->memory_mb() : 0.;
+    }
+
+    double LinearSolver::factor_entries() const
+    {
+      return mumps ? mumps->factor_entries() : 0.;
+    }
+
     LinearSolver::~LinearSolver() = default;
+
+    namespace
+    {
+      /// A timer section when a timer is given.
+      std::unique_ptr<TimerOutput::Scope> phase(TimerOutput *timer,
+                                                const char  *name)
+      {
+        return timer ? std::make_unique<TimerOutput::Scope>(*timer, name)
+                     : nullptr;
+      }
+    } // namespace
 
     void
     LinearSolver::estimate_condition(const TrilinosWrappers::SparseMatrix &A,
@@ -73,19 +96,36 @@ namespace formsolve
                 }
               x = 0;
             }
-          if (!same_pattern)
+          if (!same_pattern &&
+              prm.direct_solver == parameters::DirectSolver::mumps)
             {
-              problem = std::make_unique<Epetra_LinearProblem>();
+              MumpsDirect::Settings settings;
+              settings.symmetric   = symmetric && prm.symmetric_factorisation;
+              settings.metis_order = prm.metis_order;
+              settings.refinement_steps = prm.refinement_steps;
+              mumps.reset();
+              const auto t = phase(timer, "linear solve: analysis");
+              mumps = std::make_unique<MumpsDirect>(A.get_mpi_communicator(),
+                                                    settings);
+              mumps->analyse(A);
+              factorised_matrix = &matrix;
+              factorised_nnz    = A.n_nonzero_elements();
+            }
+          else if (!same_pattern)
+            {
+              const auto t = phase(timer, "linear solve: analysis");
+              problem      = std::make_unique<Epetra_LinearProblem>();
               problem->SetOperator(&matrix);
               Amesos     factory;
-              const bool mumps =
-                prm.direct_solver == parameters::DirectSolver::mumps;
-              direct.reset(factory.Create(mumps ? "Amesos_Mumps" : "Amesos_Klu",
-                                          *problem));
+              const bool amesos_mumps =
+                prm.direct_solver == parameters::DirectSolver::amesos_mumps;
+              direct.reset(
+                factory.Create(amesos_mumps ? "Amesos_Mumps" : "Amesos_Klu",
+                               *problem));
               AssertThrow(direct != nullptr,
                           ExcMessage(
                             "Linear solver/Direct solver: Amesos has no " +
-                            std::string(mumps ? "MUMPS" : "KLU")));
+                            std::string(amesos_mumps ? "MUMPS" : "KLU")));
               AssertThrow(direct->SymbolicFactorization() == 0,
                           ExcMessage("symbolic factorisation failed"));
               factorised_matrix = &matrix;
@@ -109,9 +149,15 @@ namespace formsolve
       TrilinosWrappers::MPI::Vector       &x,
       const TrilinosWrappers::MPI::Vector &b)
     {
-      AssertThrow(direct->NumericFactorization() == 0,
-                  ExcMessage(
-                    "numeric factorisation failed (singular matrix?)"));
+      {
+        const auto t = phase(timer, "linear solve: factorisation");
+        if (mumps)
+          mumps->factorise(*last_matrix);
+        else
+          AssertThrow(direct->NumericFactorization() == 0,
+                      ExcMessage(
+                        "numeric factorisation failed (singular matrix?)"));
+      }
       ++n_factorisations;
       factors_current = true;
       substitute(x, b);
@@ -121,6 +167,9 @@ namespace formsolve
     void LinearSolver::substitute(TrilinosWrappers::MPI::Vector       &x,
                                   const TrilinosWrappers::MPI::Vector &b)
     {
+      const auto t = phase(timer, "linear solve: substitution");
+      if (mumps)
+        return mumps->solve(x, b);
       problem->SetLHS(&x.trilinos_vector());
       problem->SetRHS(const_cast<Epetra_MultiVector *>(&b.trilinos_vector()));
       AssertThrow(direct->Solve() == 0, ExcMessage("direct solve failed"));

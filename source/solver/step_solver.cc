@@ -70,6 +70,8 @@ namespace formsolve
             }
           report.matrix_assemblies = system.matrix_assemblies() - assemblies;
           report.factorisations    = system.factorisations() - factorised;
+          report.factorisation_memory_mb = system.factorisation_memory_mb();
+          report.factor_entries          = system.factor_entries();
           report.iterations += attempt.iterations;
           report.linear_iterations += attempt.linear_iterations;
           report.picard_iterations += attempt.picard_iterations;

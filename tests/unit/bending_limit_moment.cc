@@ -37,7 +37,7 @@ namespace
         , material(material_parameters())
         , kinematics(false)
         , assembler(material, kinematics, mapping, degree)
-        , linear(linear_parameters(), {})
+        , linear(linear_parameters(), {}, true)
     {
       parameters::Geometry g;
       g.model        = model::Model::full;

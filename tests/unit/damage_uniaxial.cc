@@ -29,7 +29,7 @@ namespace
     Tension(simulation::State<3> &state, const solver::Assembler<3> &assembler)
         : state(state)
         , assembler(assembler)
-        , linear(parameters::LinearSolver(), {})
+        , linear(parameters::LinearSolver(), {}, false)
     {
       // The state's constraints (symmetry planes x = 0, y = 0) plus v_z = 0
       // at z = 0 and v_z = V at z = h.

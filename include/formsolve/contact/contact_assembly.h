@@ -17,6 +17,8 @@ namespace formsolve
   {
     /// r -= f_contact and K += -df/dv for the active (and locked) pairs with
     /// factors @p epsilon; then compresses @p matrix (if any) and @p residual.
+    /// @p symmetrise: each nodal stiffness enters as (K + K^T)/2 (the
+    /// friction part of K is not symmetric).
     template <int dim>
     void add_contact_terms(const ContactSet<dim>                   &set,
                            const std::vector<double>               &epsilon,
@@ -24,6 +26,7 @@ namespace formsolve
                            const double                             v0,
                            const double                             dt,
                            const bool                               newton,
+                           const bool                               symmetrise,
                            const dealii::AffineConstraints<double> &constraints,
                            dealii::TrilinosWrappers::SparseMatrix  *matrix,
                            dealii::TrilinosWrappers::MPI::Vector   &residual);

@@ -41,7 +41,10 @@ namespace formsolve
 
     struct NonlinearSolver
     {
-      Tangent      tangent               = Tangent::stress_velocity;
+      Tangent tangent = Tangent::stress_velocity;
+      /// Friction stiffness (K + K^T)/2: a symmetric tangent, at the price
+      /// of an inexact Newton step under sliding friction.
+      bool         symmetrise_friction   = false;
       unsigned int max_iterations        = 60;
       double       residual_tolerance    = 1e-6;
       double       correction_tolerance  = 1e-6;
@@ -62,8 +65,9 @@ namespace formsolve
     };
     enum class DirectSolver
     {
-      mumps,
-      klu
+      mumps,        // MUMPS's C interface (solver/mumps_direct.h)
+      amesos_mumps, // MUMPS through Amesos (unsymmetric, automatic order)
+      klu           // Amesos KLU (serial, gathered)
     };
     enum class IterativeSolver
     {
@@ -73,12 +77,16 @@ namespace formsolve
 
     struct LinearSolver
     {
-      LinearSolverType type                 = LinearSolverType::direct;
-      DirectSolver     direct_solver        = DirectSolver::mumps;
-      IterativeSolver  iterative_solver     = IterativeSolver::gmres;
-      double           tolerance            = 1e-8;
-      unsigned int     max_iterations       = 2000;
-      unsigned int     condition_iterations = 0; // Lanczos estimate, 0: off
+      LinearSolverType type          = LinearSolverType::direct;
+      DirectSolver     direct_solver = DirectSolver::mumps;
+      /// MUMPS: LDL^T when the tangent is symmetric.
+      bool            symmetric_factorisation = true;
+      bool            metis_order      = true; // else MUMPS's automatic (PORD)
+      unsigned int    refinement_steps = 0;    // MUMPS iterative refinement
+      IterativeSolver iterative_solver = IterativeSolver::gmres;
+      double          tolerance        = 1e-8;
+      unsigned int    max_iterations   = 2000;
+      unsigned int    condition_iterations = 0; // Lanczos estimate, 0: off
       /// Direct: GMRES iterations allowed with an older factorisation as
       /// preconditioner before refactorising; 0: factorise every matrix.
       unsigned int reuse_iterations = 0;

@@ -32,13 +32,15 @@ namespace formsolve
     /// Summary of a finished run (for tests and benchmarks).
     struct RunSummary
     {
-      unsigned int steps             = 0;
-      unsigned int newton_iterations = 0;
-      unsigned int linear_iterations = 0;
-      unsigned int matrix_assemblies = 0; // tangent assemblies
-      unsigned int factorisations    = 0; // numeric, direct solver
-      unsigned int cutbacks          = 0;
-      double       wall_time         = 0;
+      unsigned int steps                   = 0;
+      unsigned int newton_iterations       = 0;
+      unsigned int linear_iterations       = 0;
+      unsigned int matrix_assemblies       = 0; // tangent assemblies
+      unsigned int factorisations          = 0; // numeric, direct solver
+      double       factorisation_memory_mb = 0; // MUMPS, all ranks, largest
+      double       factor_entries          = 0; // MUMPS, largest
+      unsigned int cutbacks                = 0;
+      double       wall_time               = 0;
       double       newton_wall_time  = 0; // spent inside Newton iterations
       double       n_dofs            = 0; // largest over the run
       double       dof_steps         = 0; // sum over steps of the DoFs

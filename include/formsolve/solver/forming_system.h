@@ -50,6 +50,16 @@ namespace formsolve
       unsigned long matrix_assemblies() const { return n_matrix_assemblies; }
       /// Numeric factorisations of the direct solver since the start.
       unsigned long factorisations() const { return n_factorisations; }
+      /// Memory of the last MUMPS factorisation, all ranks (MB; 0 if none).
+      double factorisation_memory_mb() const
+      {
+        return linear_solver ? linear_solver->factorisation_memory_mb() : 0.;
+      }
+      /// Entries of the last MUMPS factors (0 if none).
+      double factor_entries() const
+      {
+        return linear_solver ? linear_solver->factor_entries() : 0.;
+      }
 
       // NonlinearSystem
       double       assemble(const VectorType &v, const bool newton) override;

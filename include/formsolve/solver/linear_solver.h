@@ -1,11 +1,14 @@
-// Direct (Amesos MUMPS/KLU) or iterative (GMRES/CG + ML AMG) linear solves.
+// Direct (MUMPS called directly, Amesos MUMPS/KLU) or iterative (GMRES/CG +
+// ML AMG) linear solves.
 #pragma once
 
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <formsolve/parameters/parameters.h>
+#include <formsolve/solver/mumps_direct.h>
 
 #include <memory>
 #include <vector>
@@ -21,8 +24,10 @@ namespace formsolve
     {
     public:
       /// @p constant_modes: the rigid translations per component, for AMG.
+      /// @p symmetric: the matrices are symmetric (MUMPS may use LDL^T).
       LinearSolver(const parameters::LinearSolver       &p,
-                   const std::vector<std::vector<bool>> &constant_modes);
+                   const std::vector<std::vector<bool>> &constant_modes,
+                   const bool                            symmetric);
       ~LinearSolver();
 
       /// Solves A x = b; returns the iteration count (1 for direct solves).
@@ -40,18 +45,33 @@ namespace formsolve
       unsigned int solve_again(dealii::TrilinosWrappers::MPI::Vector       &x,
                                const dealii::TrilinosWrappers::MPI::Vector &b);
 
+      /// Time the direct solver's phases in @p timer: sections "linear
+      /// solve: analysis", "...: factorisation", "...: substitution" (within
+      /// the caller's "linear solve").
+      void time_phases(dealii::TimerOutput &t) { timer = &t; }
+
       /// Numeric factorisations since construction (direct solver).
       unsigned long factorisations() const { return n_factorisations; }
+
+      /// Memory of the last MUMPS factorisation on all ranks (MB); 0 for the
+      /// Amesos solvers.
+      double factorisation_memory_mb() const;
+      /// Entries of the last MUMPS factors (LDL^T: one triangle); 0 for the
+      /// Amesos solvers.
+      double factor_entries() const;
 
       /// Lanczos estimate of cond(A) from the last solve ('Condition estimate
       /// iterations' CG steps without preconditioner), 0 if off.
       double condition_estimate() const { return last_condition; }
 
     private:
-      parameters::LinearSolver                                   prm;
-      std::vector<std::vector<bool>>                             constant_modes;
-      std::unique_ptr<Epetra_LinearProblem>                      problem;
-      std::unique_ptr<Amesos_BaseSolver>                         direct;
+      parameters::LinearSolver              prm;
+      std::vector<std::vector<bool>>        constant_modes;
+      std::unique_ptr<Epetra_LinearProblem> problem;
+      std::unique_ptr<Amesos_BaseSolver>    direct;
+      std::unique_ptr<MumpsDirect>          mumps;
+      const bool                            symmetric;
+      dealii::TimerOutput                  *timer = nullptr;
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
       const dealii::TrilinosWrappers::SparseMatrix *last_matrix       = nullptr;
       const void                                   *factorised_matrix = nullptr;

@@ -23,19 +23,21 @@ namespace formsolve
     /// What a step cost and how it ended.
     struct StepReport
     {
-      bool         converged             = false;
-      double       dt                    = 0; // time step of the converged try
-      unsigned int cutbacks              = 0; // failed tries before it
-      unsigned int iterations            = 0; // Newton iterations, all tries
-      unsigned int linear_iterations     = 0;
-      unsigned int picard_iterations     = 0;
-      unsigned int passes                = 0; // strict / Uzawa re-solves
-      unsigned int matrix_assemblies     = 0; // tangent assemblies, all tries
-      unsigned int factorisations        = 0; // numeric, all tries
-      unsigned int max_linear_iterations = 0;
-      double       condition_estimate    = 0;
-      double       residual              = 0; // |r|/|f| of the last try
-      std::string  failure;                   // why the last try failed
+      bool         converged         = false;
+      double       dt                = 0; // time step of the converged try
+      unsigned int cutbacks          = 0; // failed tries before it
+      unsigned int iterations        = 0; // Newton iterations, all tries
+      unsigned int linear_iterations = 0;
+      unsigned int picard_iterations = 0;
+      unsigned int passes            = 0;       // strict / Uzawa re-solves
+      unsigned int matrix_assemblies = 0;       // tangent assemblies, all tries
+      unsigned int factorisations    = 0;       // numeric, all tries
+      double       factorisation_memory_mb = 0; // MUMPS, all ranks
+      double       factor_entries          = 0; // MUMPS
+      unsigned int max_linear_iterations   = 0;
+      double       condition_estimate      = 0;
+      double       residual                = 0; // |r|/|f| of the last try
+      std::string  failure;                     // why the last try failed
     };
 
     template <int dim>

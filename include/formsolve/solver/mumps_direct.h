@@ -1,0 +1,66 @@
+// MUMPS through its C interface, in the setting that suits formsolve's
+// tangents: distributed assembled input straight from the Trilinos matrix's
+// locally owned rows, symmetric LDL^T when the tangent is symmetric, a METIS
+// nested-dissection pivot order, and the analysis kept while the sparsity
+// pattern stays the same. Amesos cannot pass the lower triangle or a pivot
+// order (../shared/research/linear-solvers.md).
+#pragma once
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <vector>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    class MumpsDirect
+    {
+    public:
+      struct Settings
+      {
+        /// LDL^T of the lower triangle (the matrix must be symmetric).
+        bool symmetric = false;
+        /// METIS nested dissection; else MUMPS's automatic choice (PORD).
+        bool metis_order = true;
+        /// MUMPS ICNTL(10): at most this many steps of iterative
+        /// refinement, stopped by MUMPS's backward-error test.
+        unsigned int refinement_steps = 0;
+      };
+
+      MumpsDirect(const MPI_Comm comm, const Settings &settings);
+      ~MumpsDirect();
+
+      /// Analysis of @p A's sparsity pattern: pivot order and symbolic
+      /// factorisation. Needed again only when the pattern changes.
+      void analyse(const dealii::TrilinosWrappers::SparseMatrix &A);
+      /// Numeric factorisation of @p A's current values (same pattern as at
+      /// analyse()). Throws with MUMPS's error code on failure.
+      void factorise(const dealii::TrilinosWrappers::SparseMatrix &A);
+      /// x = A^-1 b with the stored factors.
+      void solve(dealii::TrilinosWrappers::MPI::Vector       &x,
+                 const dealii::TrilinosWrappers::MPI::Vector &b);
+
+      /// Memory the last factorisation used on all ranks (MB, INFOG(22)).
+      double memory_mb() const;
+      /// Entries in the factors (INFOG(29); LDL^T stores one triangle).
+      double factor_entries() const;
+
+    private:
+      struct Data;
+      std::unique_ptr<Data> data;
+      Settings              settings;
+
+      /// Copies the values of @p A's stored entries (the triangle kept at
+      /// analysis) into the MUMPS input.
+      void copy_values(const dealii::TrilinosWrappers::SparseMatrix &A);
+      /// One MUMPS call (JOB = @p job), then check(@p what).
+      void call(const int job, const char *what);
+      /// Throws if MUMPS's last call failed (INFOG(1) < 0; the same on all
+      /// ranks).
+      void check(const char *what) const;
+    };
+  } // namespace solver
+} // namespace formsolve
