@@ -196,13 +196,24 @@ namespace formsolve
                           0,
                           d.comm);
             }
+          // METIS runs on the root only: its failure must stop every rank
+          // (the others would wait in MUMPS's analysis).
+          std::string failure;
           if (d.root)
-            {
-              d.pivot_position = nested_dissection(id.n, rows, columns);
-              for (auto &p : d.pivot_position)
-                ++p;
-              id.perm_in = d.pivot_position.data();
-            }
+            try
+              {
+                d.pivot_position = nested_dissection(id.n, rows, columns);
+                for (auto &p : d.pivot_position)
+                  ++p;
+                id.perm_in = d.pivot_position.data();
+              }
+            catch (const std::exception &e)
+              {
+                failure = e.what();
+              }
+          failure = Utilities::MPI::broadcast(d.comm, failure, 0);
+          AssertThrow(failure.empty(),
+                      ExcMessage("Linear solver/Ordering = METIS: " + failure));
         }
       call(1, "analysis");
     }
