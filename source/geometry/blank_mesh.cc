@@ -3,6 +3,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 
 #include <formsolve/geometry/blank_mesh.h>
@@ -114,25 +115,31 @@ namespace formsolve
           read_planform(g.mesh_file, t);
       }
 
-      void create(const parameters::Geometry              &g,
-                  const parameters::Mesh                  &m,
-                  parallel::distributed::Triangulation<3> &tria)
-      {
-        Triangulation<2> planform;
-        create_planform(g, planform);
-        planform.refine_global(m.refinements);
+      /// Manifold id of the rim of a round blank (the cylinder r = R).
+      constexpr types::manifold_id rim_manifold = 1;
 
-        // Drop the manifolds: the refined planform becomes the coarse mesh,
-        // so that later refinement near tool radii stays inside the sheet.
+      void create_coarse(const parameters::Geometry              &g,
+                         const parameters::Mesh                  &m,
+                         parallel::distributed::Triangulation<3> &tria)
+      {
+        const unsigned int k = initial_mesh_level(m);
+        Triangulation<2>   planform;
+        create_planform(g, planform);
+        planform.refine_global(m.refinements - k);
+
+        // Drop the planform's manifolds: refinement in the sheet is flat,
+        // except on the rim of a round blank (below).
         Triangulation<2> flat;
         GridGenerator::flatten_triangulation(planform, flat);
 
-        std::vector<double> z(m.layers + 1);
-        for (unsigned int k = 0; k <= m.layers; ++k)
-          z[k] = g.thickness * k / m.layers;
+        const unsigned int  layers = m.layers >> k;
+        std::vector<double> z(layers + 1);
+        for (unsigned int j = 0; j <= layers; ++j)
+          z[j] = g.thickness * j / layers;
         Triangulation<3> serial;
         GridGenerator::extrude_triangulation(flat, z, serial);
         const double tol = 1e-6 * g.thickness;
+        const bool   rim = g.blank_shape == BlankShape::round;
         for (const auto &cell : serial.active_cell_iterators())
           for (const auto &face : cell->face_iterators())
             if (face->at_boundary())
@@ -146,22 +153,31 @@ namespace formsolve
                     else if (model::symmetric_in_y(g.model) &&
                              std::abs(c[1]) < tol)
                       id = symmetry_y;
+                    else if (rim)
+                      face->set_all_manifold_ids(rim_manifold);
                   }
                 face->set_boundary_id(id);
               }
         tria.copy_triangulation(serial);
+        // The p4est refinements put the rim's new vertices on the circle, as
+        // the planform's own refinement did, so the initial mesh is the same
+        // as the refined planform extruded. It stays attached: every rank
+        // must place the vertices of a cell it re-creates identically.
+        if (rim)
+          tria.set_manifold(rim_manifold, CylindricalManifold<3>(2));
       }
 
-      void create(const parameters::Geometry              &g,
-                  const parameters::Mesh                  &m,
-                  parallel::distributed::Triangulation<2> &tria)
+      void create_coarse(const parameters::Geometry              &g,
+                         const parameters::Mesh                  &m,
+                         parallel::distributed::Triangulation<2> &tria)
       {
         Assert(g.model == Model::axisymmetric, ExcInternalError());
-        const double     R = 0.5 * g.blank_diameter;
-        Triangulation<2> serial;
+        const unsigned int k = initial_mesh_level(m);
+        const double       R = 0.5 * g.blank_diameter;
+        Triangulation<2>   serial;
         GridGenerator::subdivided_hyper_rectangle(serial,
-                                                  {2u << m.refinements,
-                                                   m.layers},
+                                                  {2u << (m.refinements - k),
+                                                   m.layers >> k},
                                                   Point<2>(0, 0),
                                                   Point<2>(R, g.thickness));
         const double tol = 1e-6 * g.thickness;
@@ -174,19 +190,41 @@ namespace formsolve
       }
     } // namespace
 
+    unsigned int initial_mesh_level(const parameters::Mesh &m)
+    {
+      unsigned int k = 0;
+      while (k < m.refinements && m.layers % (2u << k) == 0)
+        ++k;
+      return k;
+    }
+
+    template <int dim>
+    void
+    create_coarse_blank_mesh(const parameters::Geometry                &g,
+                             const parameters::Mesh                    &m,
+                             parallel::distributed::Triangulation<dim> &tria)
+    {
+      AssertThrow(model::space_dimension(g.model) == dim, ExcInternalError());
+      create_coarse(g, m, tria);
+    }
+
     template <int dim>
     void create_blank_mesh(const parameters::Geometry                &g,
                            const parameters::Mesh                    &m,
                            parallel::distributed::Triangulation<dim> &tria)
     {
-      AssertThrow(model::space_dimension(g.model) == dim, ExcInternalError());
-      create(g, m, tria);
+      create_coarse_blank_mesh(g, m, tria);
+      tria.refine_global(initial_mesh_level(m));
     }
 
-#define INSTANTIATE(dim)                \
-  template void create_blank_mesh<dim>( \
-    const parameters::Geometry &,       \
-    const parameters::Mesh &,           \
+#define INSTANTIATE(dim)                          \
+  template void create_blank_mesh<dim>(           \
+    const parameters::Geometry &,                 \
+    const parameters::Mesh &,                     \
+    parallel::distributed::Triangulation<dim> &); \
+  template void create_coarse_blank_mesh<dim>(    \
+    const parameters::Geometry &,                 \
+    const parameters::Mesh &,                     \
     parallel::distributed::Triangulation<dim> &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE

@@ -17,8 +17,10 @@ namespace formsolve
     template <int dim>
     RefinementCriteria<dim>::RefinementCriteria(
       const parameters::MeshRefinement &p,
-      const tools::ToolSet<dim>        &tools)
+      const tools::ToolSet<dim>        &tools,
+      const unsigned int                initial_level)
         : prm(p)
+        , initial_level(initial_level)
     {
       for (unsigned int t = 0; t < tools.size(); ++t)
         {
@@ -92,7 +94,11 @@ namespace formsolve
             continue;
           const Point<dim> x =
             mapping.transform_unit_to_real_cell(cell, centre);
-          const unsigned int level = cell->level();
+          // Levels count from the initial mesh, which p4est may have refined
+          // from a coarser one (geometry::initial_mesh_level).
+          Assert(cell->level() >= static_cast<int>(initial_level),
+                 ExcInternalError());
+          const unsigned int level = cell->level() - initial_level;
           // Size of the level-0 ancestor: children must not leave the band
           // just because they are smaller than the cell that entered it.
           const double       h0        = cell->diameter() * (1u << level);

@@ -135,9 +135,10 @@ namespace formsolve
 
       if (root)
         {
-          Metadata all = meta;
-          all["time"]  = exact_text(state.time);
-          all["step"]  = std::to_string(state.step);
+          Metadata all        = meta;
+          all["time"]         = exact_text(state.time);
+          all["step"]         = std::to_string(state.step);
+          all["coarse_cells"] = std::to_string(state.tria.n_cells(0));
           for (unsigned int t = 0; t < state.tools.size(); ++t)
             {
               const auto key         = "tool." + std::to_string(t);
@@ -205,9 +206,15 @@ namespace formsolve
             meta[line.substr(0, eq)] = line.substr(eq + 3);
         }
 
-      geometry::create_blank_mesh(state.prm.geometry,
-                                  state.prm.mesh,
-                                  state.tria);
+      geometry::create_coarse_blank_mesh(state.prm.geometry,
+                                         state.prm.mesh,
+                                         state.tria);
+      AssertThrow(meta.count("coarse_cells") &&
+                    std::stoul(meta.at("coarse_cells")) ==
+                      state.tria.n_cells(0),
+                  ExcMessage("--resume: the checkpoint in " + from +
+                             " was written by a formsolve with another "
+                             "coarse mesh; start the run again"));
       state.tria.load(from + "/mesh");
       state.setup_dofs(assembler);
       parallel::distributed::SolutionTransfer<dim, VectorType> fields(

@@ -3,6 +3,7 @@
 
 #include <formsolve/app/error_exit.h>
 #include <formsolve/contact/contact_search.h>
+#include <formsolve/geometry/blank_mesh.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/postprocess/history_writer.h>
 #include <formsolve/postprocess/progress.h>
@@ -40,7 +41,9 @@ namespace formsolve
                     run.mesh.degree,
                     &damage)
         , step_solver(run, state, assembler, timer, pcout)
-        , criteria(run.refinement, state.tools)
+        , criteria(run.refinement,
+                   state.tools,
+                   geometry::initial_mesh_level(run.mesh))
         , sheet(run)
     {}
 
@@ -242,6 +245,12 @@ namespace formsolve
           check_initial_scene();
         }
       prepare_output_directory();
+      {
+        Utilities::System::MemoryStats mem;
+        Utilities::System::get_memory_stats(mem);
+        summary.setup_memory_kb_max_rank =
+          Utilities::MPI::max(double(mem.VmHWM), comm);
+      }
 
       pcout << "formsolve: " << model::name(prm.geometry.model) << " model, "
             << Utilities::MPI::n_mpi_processes(comm) << " rank(s), "

@@ -98,6 +98,8 @@ namespace formsolve
       Utilities::System::MemoryStats mem;
       Utilities::System::get_memory_stats(mem);
       summary.peak_memory_kb = Utilities::MPI::sum(double(mem.VmHWM), comm);
+      summary.peak_memory_kb_max_rank =
+        Utilities::MPI::max(double(mem.VmHWM), comm);
       if (Utilities::MPI::this_mpi_process(comm) != 0)
         return;
       const auto &sh = sheet.summary();
@@ -119,6 +121,8 @@ namespace formsolve
         << "\nwall_time = " << summary.wall_time
         << "\nnewton_wall_time = " << summary.newton_wall_time
         << "\npeak_memory_kb_all_ranks = " << summary.peak_memory_kb
+        << "\npeak_memory_kb_max_rank = " << summary.peak_memory_kb_max_rank
+        << "\nsetup_memory_kb_max_rank = " << summary.setup_memory_kb_max_rank
         << "\nfinal_punch_travel = " << state.tools.punch_travel()
         << "\nholder_release_travel = " << state.holder.release_travel
         << "\npeak_punch_force = " << summary.peak_punch_force

@@ -1,6 +1,12 @@
 // The blank (sheet) mesh. 3-D: a 2-D planform of the modelled part,
 // generated or read from gmsh, extruded into hexahedral layers through the
 // thickness. Axisymmetric: the r-z section [0, R] x [0, t].
+//
+// The p4est coarse mesh is as coarse as isotropic refinement allows: each
+// refinement in p4est halves the layers too, so the coarse mesh is the
+// planform refined k levels less with layers / 2^k layers, and p4est refines
+// it k times (k = initial_mesh_level). Every rank stores the coarse mesh but
+// only its share of the fine one.
 #pragma once
 
 #include <deal.II/distributed/tria.h>
@@ -20,8 +26,20 @@ namespace formsolve
       axis         = 3  // r = 0 (axisymmetric model): v_r = 0
     };
 
-    /// Fills @p tria (empty) with the blank in 0 <= z <= thickness; dim must
-    /// be model::space_dimension(geometry.model).
+    /// Levels refined in p4est from the coarse mesh to the initial mesh: the
+    /// largest k <= Planform refinements with 2^k dividing the layers.
+    unsigned int initial_mesh_level(const parameters::Mesh &mesh);
+
+    /// Fills @p tria (empty) with the coarse mesh only, as a checkpoint's
+    /// forest is loaded onto it.
+    template <int dim>
+    void create_coarse_blank_mesh(
+      const parameters::Geometry                        &geometry,
+      const parameters::Mesh                            &mesh,
+      dealii::parallel::distributed::Triangulation<dim> &tria);
+
+    /// Fills @p tria (empty) with the initial mesh of the blank in
+    /// 0 <= z <= thickness; dim must be model::space_dimension(geometry.model).
     template <int dim>
     void
     create_blank_mesh(const parameters::Geometry &geometry,

@@ -28,8 +28,10 @@ namespace formsolve
     class RefinementCriteria
     {
     public:
+      /// @p initial_level: the triangulation level of the initial mesh.
       RefinementCriteria(const parameters::MeshRefinement &p,
-                         const tools::ToolSet<dim>        &tools);
+                         const tools::ToolSet<dim>        &tools,
+                         unsigned int                      initial_level);
 
       /// Sets refinement and coarsening flags on the locally owned cells of
       /// @p dof_handler's triangulation, positions from @p mapping (current
@@ -49,6 +51,7 @@ namespace formsolve
 
     private:
       parameters::MeshRefinement prm;
+      unsigned int               initial_level;
       std::vector<unsigned int>  tool_level; // per tool of the ToolSet
     };
   } // namespace refinement

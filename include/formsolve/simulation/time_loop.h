@@ -41,13 +41,17 @@ namespace formsolve
       double       factor_entries          = 0; // MUMPS, largest
       unsigned int cutbacks                = 0;
       double       wall_time               = 0;
-      double       newton_wall_time  = 0; // spent inside Newton iterations
-      double       n_dofs            = 0; // largest over the run
-      double       dof_steps         = 0; // sum over steps of the DoFs
-      double       peak_memory_kb    = 0; // peak resident set, all ranks
-      double       peak_punch_force  = 0; // N, full part
-      double       peak_force_travel = 0; // mm
-      double       max_penetration   = 0; // mm, over the run
+      double       newton_wall_time = 0; // spent inside Newton iterations
+      double       n_dofs           = 0; // largest over the run
+      double       dof_steps        = 0; // sum over steps of the DoFs
+      double       peak_memory_kb   = 0; // peak resident set, all ranks
+      double       peak_memory_kb_max_rank = 0; // the same, largest rank
+      /// Peak resident set of the largest rank once the mesh, DoFs and
+      /// matrix are set up, before the first factorisation.
+      double setup_memory_kb_max_rank = 0;
+      double peak_punch_force         = 0; // N, full part
+      double peak_force_travel        = 0; // mm
+      double max_penetration          = 0; // mm, over the run
       /// Punch travel at which the deciding fracture criterion first reached
       /// 1 (interpolated between steps), -1 if it did not.
       double      critical_stroke = -1;
