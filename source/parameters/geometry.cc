@@ -105,7 +105,10 @@ namespace formsolve
         "4",
         Integer(1, 64),
         "Element layers through the sheet thickness. Bending needs at least "
-        "4 layers of degree 1 or 2 layers of degree 2.");
+        "4 layers of degree 1 or 2 layers of degree 2. A power of 2 (2, 4, "
+        "8) lets p4est make the last in-plane refinements, so each rank "
+        "stores only its part of the mesh; with an odd number, every rank "
+        "stores the whole refined planform x layers.");
       prm.declare_entry(
         "Planform refinements",
         "4",
