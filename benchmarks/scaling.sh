@@ -46,16 +46,14 @@ fi
 if [ "$MAX" -ge 7 ]; then
   run l7-2ranks 2 7 0.25 && runs+=("l7-2ranks 2")
 fi
-/usr/bin/python3 - "$out" "$root/doc/scaling.csv" "${runs[@]}" <<'PY'
-import csv, math, re, sys
+PYTHONPATH="$root/benchmarks" /usr/bin/python3 - "$out" "$root/doc/scaling.csv" "${runs[@]}" <<'PY'
+import math, sys
+from run_tables import section, summary, write
 out, csv_path = sys.argv[1:3]
-def section(log, name):
-    m = re.search(r"\| " + re.escape(name) + r"\s+\|\s+(\d+) \|\s+([0-9.e+-]+)s", log)
-    return (int(m.group(1)), float(m.group(2))) if m else (0, 0.0)
 rows = []
 for item in sys.argv[3:]:
     name, ranks = item.split()
-    s = dict(l.rstrip("\n").split(" = ", 1) for l in open(f"{out}/{name}/run-summary.txt") if " = " in l)
+    s = summary(f"{out}/{name}")
     log = open(f"{out}/{name}.log").read()
     newton = int(s["newton_iterations"])
     dofs = float(s["dofs"])
@@ -84,16 +82,7 @@ def fit(key):
     y = [math.log(r[key]) for r in serial]
     mx, my = sum(x) / len(x), sum(y) / len(y)
     return sum((a - mx) * (b - my) for a, b in zip(x, y)) / sum((a - mx) ** 2 for a in x)
-with open(csv_path, "w") as f:
-    w = csv.DictWriter(f, fieldnames=list(rows[0]))
-    w.writeheader()
-    for r in rows:
-        w.writerow({k: (f"{v:.4g}" if isinstance(v, float) else v) for k, v in r.items()})
-keys = list(rows[0])
-print("| " + " | ".join(keys) + " |")
-print("|" + "---|" * len(keys))
-for r in rows:
-    print("| " + " | ".join(f"{r[k]:.3g}" if isinstance(r[k], float) else str(r[k]) for k in keys) + " |")
+write(rows, csv_path)
 print(f"\nalpha (1 rank, >= 10k DoFs): time per iteration {fit('s_per_iteration'):.2f}, "
       f"assembly {fit('assembly_s_per_iteration'):.2f}, factorisation {fit('factorisation_s_per_iteration'):.2f}")
 PY

@@ -230,6 +230,28 @@ namespace formsolve
                         Integer(1),
                         "Iteration limit of the iterative solver.");
       prm.declare_entry(
+        "AMG null space",
+        "rigid-body modes",
+        Selection("rigid-body modes|translations"),
+        "Type = iterative: the near null space ML coarsens with. rigid-body "
+        "modes: translations and rotations of the current configuration "
+        "(6 in 3-D, 3 in 2-D); translations: dim constant modes.");
+      prm.declare_entry(
+        "AMG smoother",
+        "Chebyshev",
+        Selection("Chebyshev|symmetric Gauss-Seidel|line Gauss-Seidel"),
+        "Type = iterative: ML's smoother (2 sweeps). line Gauss-Seidel "
+        "solves the nodes along lines it detects from the coordinates (the "
+        "thickness direction of a sheet) together.");
+      prm.declare_entry(
+        "Fallback to direct",
+        "true",
+        Bool(),
+        "Type = iterative: a solve that does not reach Tolerance within Max "
+        "iterations is done by the direct solver (Direct solver) instead; it "
+        "counts as a factorisation. false: the Newton solve fails (and the "
+        "step is cut back).");
+      prm.declare_entry(
         "Condition estimate iterations",
         "0",
         Integer(0),
@@ -254,6 +276,22 @@ namespace formsolve
         "Relative residual |b - A x|/|b| that GMRES with a reused "
         "factorisation must reach (-); a fresh factorisation solves to "
         "round-off.");
+      prm.declare_entry(
+        "Low-rank tolerance",
+        "0",
+        Double(0),
+        "Direct solver = MUMPS: block low-rank (BLR) factorisation with this "
+        "dropping tolerance (-, relative to the scaled matrix; MUMPS "
+        "ICNTL(35) = 2, CNTL(7)), e.g. 1e-8. The factors are then stored "
+        "compressed and are approximate: every solve is GMRES preconditioned "
+        "by them, to Reuse tolerance within Low-rank iterations. 0: full-rank "
+        "factors (exact up to round-off).");
+      prm.declare_entry(
+        "Low-rank iterations",
+        "20",
+        Integer(1, 1000),
+        "GMRES iterations allowed with low-rank factors before the linear "
+        "solve fails (the Newton step is then cut back).");
       prm.leave_subsection();
     }
 
@@ -262,21 +300,32 @@ namespace formsolve
       prm.enter_subsection("Linear solver");
       type = prm.get("Type") == "direct" ? LinearSolverType::direct
                                          : LinearSolverType::iterative;
-      const std::string direct = prm.get("Direct solver");
-      direct_solver            = direct == "MUMPS" ? DirectSolver::mumps
-                                 : direct == "Amesos MUMPS" ? DirectSolver::amesos_mumps
-                                                            : DirectSolver::klu;
-      symmetric_factorisation  = prm.get_bool("Symmetric factorisation");
-      metis_order              = prm.get("Ordering") == "METIS";
-      refinement_steps         = prm.get_integer("Refinement steps");
-      iterative_solver         = prm.get("Iterative solver") == "CG"
-                                   ? IterativeSolver::cg
-                                   : IterativeSolver::gmres;
-      tolerance                = prm.get_double("Tolerance");
-      max_iterations           = prm.get_integer("Max iterations");
+      const std::string direct   = prm.get("Direct solver");
+      direct_solver              = direct == "MUMPS" ? DirectSolver::mumps
+                                   : direct == "Amesos MUMPS" ? DirectSolver::amesos_mumps
+                                                              : DirectSolver::klu;
+      symmetric_factorisation    = prm.get_bool("Symmetric factorisation");
+      metis_order                = prm.get("Ordering") == "METIS";
+      refinement_steps           = prm.get_integer("Refinement steps");
+      iterative_solver           = prm.get("Iterative solver") == "CG"
+                                     ? IterativeSolver::cg
+                                     : IterativeSolver::gmres;
+      tolerance                  = prm.get_double("Tolerance");
+      amg_null_space             = prm.get("AMG null space") == "translations"
+                                     ? AmgNullSpace::translations
+                                     : AmgNullSpace::rigid_body_modes;
+      const std::string smoother = prm.get("AMG smoother");
+      amg_smoother         = smoother == "Chebyshev" ? AmgSmoother::chebyshev
+                             : smoother == "symmetric Gauss-Seidel"
+                               ? AmgSmoother::symmetric_gauss_seidel
+                               : AmgSmoother::line_gauss_seidel;
+      direct_fallback      = prm.get_bool("Fallback to direct");
+      max_iterations       = prm.get_integer("Max iterations");
       condition_iterations = prm.get_integer("Condition estimate iterations");
       reuse_iterations     = prm.get_integer("Reuse factorisation iterations");
       reuse_tolerance      = prm.get_double("Reuse tolerance");
+      low_rank_tolerance   = prm.get_double("Low-rank tolerance");
+      low_rank_iterations  = prm.get_integer("Low-rank iterations");
       prm.leave_subsection();
     }
 
@@ -288,6 +337,18 @@ namespace formsolve
       require(reuse_tolerance > 0 && reuse_tolerance < 1,
               "Linear solver/Reuse tolerance",
               "must lie in (0, 1)");
+      require(low_rank_tolerance < 1,
+              "Linear solver/Low-rank tolerance",
+              "must lie in [0, 1)");
+      require(low_rank_tolerance == 0 || (type == LinearSolverType::direct &&
+                                          direct_solver == DirectSolver::mumps),
+              "Linear solver/Low-rank tolerance",
+              "needs Type = direct and Direct solver = MUMPS");
+      // MUMPS's refinement stops on a backward-error test: a preconditioner
+      // that changes between applications, which GMRES does not allow.
+      require(low_rank_tolerance == 0 || refinement_steps == 0,
+              "Linear solver/Low-rank tolerance",
+              "> 0 needs Refinement steps = 0 (GMRES refines the solve)");
     }
   } // namespace parameters
 } // namespace formsolve

@@ -6,6 +6,7 @@
 #include <formsolve/contact/contact_assembly.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/solver/forming_system.h>
+#include <formsolve/solver/null_space.h>
 
 #include <cmath>
 #include <sstream>
@@ -38,10 +39,14 @@ namespace formsolve
       // The direct solver refers to the matrix: release it first.
       linear_solver.reset();
       DynamicSparsityPattern dsp(state.relevant);
-      DoFTools::make_sparsity_pattern(state.dof_handler,
-                                      dsp,
-                                      state.constraints,
-                                      false);
+      // ML's line detection needs every ghost node with all its components
+      // in the column map ("Incomplete ghost block detected" on 2 ranks
+      // otherwise): keep the (zero) couplings of constrained DoFs.
+      DoFTools::make_sparsity_pattern(
+        state.dof_handler,
+        dsp,
+        state.constraints,
+        prm.linear.type == parameters::LinearSolverType::iterative);
       SparsityTools::distribute_sparsity_pattern(dsp,
                                                  state.owned,
                                                  state.comm,
@@ -224,8 +229,15 @@ namespace formsolve
       VectorType         rhs(residual);
       rhs *= -1.;
       const unsigned long factorised = linear_solver->factorisations();
-      unsigned int        its        = linear_solver->solve(matrix, dv, rhs);
-      dw                             = 0;
+      if (linear_solver->needs_null_space())
+        linear_solver->set_null_space(rigid_body_modes(
+          state.mapping
+            ? static_cast<const Mapping<dim> &>(*state.mapping)
+            : static_cast<const Mapping<dim> &>(state.reference_mapping),
+          state.dof_handler,
+          state.owned));
+      unsigned int its = linear_solver->solve(matrix, dv, rhs);
+      dw               = 0;
       if (holder_controlled())
         {
           if (holder.engaged())

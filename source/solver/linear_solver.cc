@@ -11,7 +11,9 @@
 #include <Amesos_BaseSolver.h>
 #include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace formsolve
@@ -81,68 +83,135 @@ namespace formsolve
     {
       estimate_condition(A, b);
       last_matrix = &A;
-      if (prm.type == parameters::LinearSolverType::direct)
-        {
-          auto &matrix = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
-          const bool same_pattern = factorised_matrix == &matrix &&
-                                    factorised_nnz == A.n_nonzero_elements();
-          if (same_pattern && n_factorisations > 0 && prm.reuse_iterations > 0)
-            {
-              unsigned int its = 0;
-              if (reuse(A, x, b, its))
-                {
-                  factors_current = false;
-                  return its;
-                }
-              x = 0;
-            }
-          if (!same_pattern &&
-              prm.direct_solver == parameters::DirectSolver::mumps)
-            {
-              MumpsDirect::Settings settings;
-              settings.symmetric   = symmetric && prm.symmetric_factorisation;
-              settings.metis_order = prm.metis_order;
-              settings.refinement_steps = prm.refinement_steps;
-              mumps.reset();
-              const auto t = phase(timer, "linear solve: analysis");
-              mumps = std::make_unique<MumpsDirect>(A.get_mpi_communicator(),
-                                                    settings);
-              mumps->analyse(A);
-              factorised_matrix = &matrix;
-              factorised_nnz    = A.n_nonzero_elements();
-            }
-          else if (!same_pattern)
-            {
-              const auto t = phase(timer, "linear solve: analysis");
-              problem      = std::make_unique<Epetra_LinearProblem>();
-              problem->SetOperator(&matrix);
-              Amesos     factory;
-              const bool amesos_mumps =
-                prm.direct_solver == parameters::DirectSolver::amesos_mumps;
-              direct.reset(
-                factory.Create(amesos_mumps ? "Amesos_Mumps" : "Amesos_Klu",
-                               *problem));
-              AssertThrow(direct != nullptr,
-                          ExcMessage(
-                            "Linear solver/Direct solver: Amesos has no " +
-                            std::string(amesos_mumps ? "MUMPS" : "KLU")));
-              AssertThrow(direct->SymbolicFactorization() == 0,
-                          ExcMessage("symbolic factorisation failed"));
-              factorised_matrix = &matrix;
-              factorised_nnz    = A.n_nonzero_elements();
-            }
-          return factorise_and_substitute(x, b);
-        }
+      last_direct = prm.type == parameters::LinearSolverType::direct;
+      if (last_direct)
+        return solve_direct(A, x, b);
+      initialise_amg(A);
+      return iterate_or_fall_back(A, x, b);
+    }
 
-      amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    unsigned int
+    LinearSolver::solve_direct(const TrilinosWrappers::SparseMatrix &A,
+                               TrilinosWrappers::MPI::Vector        &x,
+                               const TrilinosWrappers::MPI::Vector  &b)
+    {
+      auto      &matrix = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
+      const bool same_pattern = factorised_matrix == &matrix &&
+                                factorised_nnz == A.n_nonzero_elements();
+      if (same_pattern && n_factorisations > 0 && prm.reuse_iterations > 0)
+        {
+          unsigned int its = 0;
+          if (gmres_with_factors(A, x, b, prm.reuse_iterations, its))
+            {
+              factors_current = false;
+              return its;
+            }
+          x = 0;
+        }
+      if (!same_pattern && prm.direct_solver == parameters::DirectSolver::mumps)
+        {
+          MumpsDirect::Settings settings;
+          settings.symmetric        = symmetric && prm.symmetric_factorisation;
+          settings.metis_order      = prm.metis_order;
+          settings.refinement_steps = prm.refinement_steps;
+          settings.low_rank_tolerance = prm.low_rank_tolerance;
+          mumps.reset();
+          const auto t = phase(timer, "linear solve: analysis");
+          mumps =
+            std::make_unique<MumpsDirect>(A.get_mpi_communicator(), settings);
+          mumps->analyse(A);
+          factorised_matrix = &matrix;
+          factorised_nnz    = A.n_nonzero_elements();
+        }
+      else if (!same_pattern)
+        {
+          const auto t = phase(timer, "linear solve: analysis");
+          problem      = std::make_unique<Epetra_LinearProblem>();
+          problem->SetOperator(&matrix);
+          Amesos     factory;
+          const bool amesos_mumps =
+            prm.direct_solver == parameters::DirectSolver::amesos_mumps;
+          direct.reset(
+            factory.Create(amesos_mumps ? "Amesos_Mumps" : "Amesos_Klu",
+                           *problem));
+          AssertThrow(direct != nullptr,
+                      ExcMessage("Linear solver/Direct solver: Amesos has no " +
+                                 std::string(amesos_mumps ? "MUMPS" : "KLU")));
+          AssertThrow(direct->SymbolicFactorization() == 0,
+                      ExcMessage("symbolic factorisation failed"));
+          factorised_matrix = &matrix;
+          factorised_nnz    = A.n_nonzero_elements();
+        }
+      return factorise_and_substitute(x, b);
+    }
+
+    void LinearSolver::initialise_amg(const TrilinosWrappers::SparseMatrix &A)
+    {
+      const auto t = phase(timer, "linear solve: AMG set-up");
+      amg          = std::make_unique<TrilinosWrappers::PreconditionAMG>();
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
       data.elliptic              = true;
       data.higher_order_elements = false;
       data.smoother_sweeps       = 2;
       data.aggregation_threshold = 0.02;
       data.constant_modes        = constant_modes;
-      amg->initialize(A, data);
-      return iterate(A, x, b);
+      Teuchos::ParameterList              list;
+      std::unique_ptr<Epetra_MultiVector> translations;
+      data.set_parameters(list, translations, A);
+      // Checks on values that are the same on every rank (a rank without
+      // DoFs has empty arrays): no rank may stop alone before ML's set-up.
+      if (needs_null_space())
+        {
+          AssertThrow(null_space.n_modes > 0,
+                      ExcMessage("AMG: no null space for this matrix"));
+          Assert(null_space.modes.size() == null_space.n_modes * A.local_size(),
+                 ExcInternalError());
+          list.set("PDE equations", static_cast<int>(null_space.n_components));
+        }
+      if (prm.amg_null_space == parameters::AmgNullSpace::rigid_body_modes)
+        {
+          list.set("null space: type", "pre-computed");
+          list.set("null space: dimension",
+                   static_cast<int>(null_space.n_modes));
+          list.set("null space: vectors", null_space.modes.data());
+        }
+      if (prm.amg_smoother == parameters::AmgSmoother::symmetric_gauss_seidel)
+        list.set("smoother: type", "symmetric Gauss-Seidel");
+      else if (prm.amg_smoother == parameters::AmgSmoother::line_gauss_seidel)
+        {
+          list.set("smoother: type", "line Gauss-Seidel");
+          list.set("smoother: line detection threshold", 0.1);
+          list.set("x-coordinates", null_space.x.data());
+          list.set("y-coordinates", null_space.y.data());
+          list.set("z-coordinates", null_space.z.data());
+        }
+      amg->initialize(A, list);
+    }
+
+    unsigned int
+    LinearSolver::iterate_or_fall_back(const TrilinosWrappers::SparseMatrix &A,
+                                       TrilinosWrappers::MPI::Vector        &x,
+                                       const TrilinosWrappers::MPI::Vector  &b)
+    {
+      unsigned int failed_iterations = 0;
+      try
+        {
+          return iterate(A, x, b);
+        }
+      catch (const SolverControl::NoConvergence &e)
+        {
+          failed_iterations = e.last_step;
+          AssertThrow(prm.direct_fallback,
+                      ExcMessage(
+                        "Linear solver: the iterative solver did not reach "
+                        "Tolerance within Max iterations = " +
+                        std::to_string(prm.max_iterations) +
+                        " (Fallback to direct = false)"));
+        }
+      // The count includes the iterations that failed: they were paid for.
+      last_direct = true;
+      x           = 0;
+      return failed_iterations + solve_direct(A, x, b);
     }
 
     unsigned int LinearSolver::factorise_and_substitute(
@@ -160,8 +229,29 @@ namespace formsolve
       }
       ++n_factorisations;
       factors_current = true;
-      substitute(x, b);
-      return 1;
+      return apply_current_factors(x, b);
+    }
+
+    unsigned int
+    LinearSolver::apply_current_factors(TrilinosWrappers::MPI::Vector       &x,
+                                        const TrilinosWrappers::MPI::Vector &b)
+    {
+      if (prm.low_rank_tolerance == 0)
+        {
+          substitute(x, b);
+          return 1;
+        }
+      // Low-rank factors are approximate: GMRES makes the solve as exact as
+      // the reuse tolerance asks.
+      x                = 0;
+      unsigned int its = 0;
+      AssertThrow(
+        gmres_with_factors(*last_matrix, x, b, prm.low_rank_iterations, its),
+        ExcMessage("GMRES with the low-rank factors did not reach Linear "
+                   "solver/Reuse tolerance within Low-rank iterations = " +
+                   std::to_string(prm.low_rank_iterations) +
+                   "; lower Linear solver/Low-rank tolerance"));
+      return its;
     }
 
     void LinearSolver::substitute(TrilinosWrappers::MPI::Vector       &x,
@@ -175,10 +265,12 @@ namespace formsolve
       AssertThrow(direct->Solve() == 0, ExcMessage("direct solve failed"));
     }
 
-    bool LinearSolver::reuse(const TrilinosWrappers::SparseMatrix &A,
-                             TrilinosWrappers::MPI::Vector        &x,
-                             const TrilinosWrappers::MPI::Vector  &b,
-                             unsigned int                         &iterations)
+    bool
+    LinearSolver::gmres_with_factors(const TrilinosWrappers::SparseMatrix &A,
+                                     TrilinosWrappers::MPI::Vector        &x,
+                                     const TrilinosWrappers::MPI::Vector  &b,
+                                     const unsigned int max_iterations,
+                                     unsigned int      &iterations)
     {
       // The factors live in the solver (MUMPS, KLU), not in A: they stay
       // those of the matrix values at the last factorisation.
@@ -191,14 +283,14 @@ namespace formsolve
           solver->substitute(dst, src);
         }
       } factors{this};
-      SolverControl                              control(prm.reuse_iterations,
+      SolverControl                              control(max_iterations,
                             prm.reuse_tolerance * b.l2_norm(),
                             false,
                             false);
       SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
         control,
         SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
-          prm.reuse_iterations + 2,
+          std::min(max_iterations + 2, 102u),
           true)); // right preconditioning: the true residual is tested
       try
         {
@@ -217,22 +309,19 @@ namespace formsolve
                               const TrilinosWrappers::MPI::Vector &b)
     {
       Assert(last_matrix != nullptr, ExcInternalError());
-      if (prm.type == parameters::LinearSolverType::direct)
+      if (last_direct)
         {
           if (factors_current)
-            {
-              substitute(x, b);
-              return 1;
-            }
+            return apply_current_factors(x, b);
           // The matrix of the last solve was not factorised: the same GMRES,
           // else its own factorisation.
           unsigned int its = 0;
-          if (reuse(*last_matrix, x, b, its))
+          if (gmres_with_factors(*last_matrix, x, b, prm.reuse_iterations, its))
             return its;
           x = 0;
           return factorise_and_substitute(x, b);
         }
-      return iterate(*last_matrix, x, b);
+      return iterate_or_fall_back(*last_matrix, x, b);
     }
 
     unsigned int LinearSolver::iterate(const TrilinosWrappers::SparseMatrix &A,
@@ -249,7 +338,9 @@ namespace formsolve
         {
           SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
             control,
-            SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(100));
+            SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+              100,
+              true)); // right preconditioning: the true residual
           gmres.solve(A, x, b, *amg);
         }
       return control.last_step();

@@ -75,6 +75,19 @@ namespace formsolve
       cg
     };
 
+    /// Near null space given to ML.
+    enum class AmgNullSpace
+    {
+      translations,
+      rigid_body_modes
+    };
+    enum class AmgSmoother
+    {
+      chebyshev,
+      symmetric_gauss_seidel,
+      line_gauss_seidel // blocks along lines of nodes (through the thickness)
+    };
+
     struct LinearSolver
     {
       LinearSolverType type          = LinearSolverType::direct;
@@ -86,11 +99,20 @@ namespace formsolve
       IterativeSolver iterative_solver = IterativeSolver::gmres;
       double          tolerance        = 1e-8;
       unsigned int    max_iterations   = 2000;
-      unsigned int    condition_iterations = 0; // Lanczos estimate, 0: off
+      AmgNullSpace    amg_null_space   = AmgNullSpace::rigid_body_modes;
+      AmgSmoother     amg_smoother     = AmgSmoother::chebyshev;
+      /// Iterative: a solve that does not converge is done by the direct
+      /// solver instead of failing.
+      bool         direct_fallback      = true;
+      unsigned int condition_iterations = 0; // Lanczos estimate, 0: off
       /// Direct: GMRES iterations allowed with an older factorisation as
       /// preconditioner before refactorising; 0: factorise every matrix.
       unsigned int reuse_iterations = 0;
       double       reuse_tolerance  = 1e-10; // relative residual of that GMRES
+      /// MUMPS block low-rank dropping tolerance (-); 0: full-rank factors.
+      double low_rank_tolerance = 0;
+      /// GMRES iterations allowed with the low-rank factors.
+      unsigned int low_rank_iterations = 20;
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);

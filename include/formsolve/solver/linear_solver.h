@@ -9,6 +9,7 @@
 
 #include <formsolve/parameters/parameters.h>
 #include <formsolve/solver/mumps_direct.h>
+#include <formsolve/solver/null_space.h>
 
 #include <memory>
 #include <vector>
@@ -50,8 +51,26 @@ namespace formsolve
       /// the caller's "linear solve").
       void time_phases(dealii::TimerOutput &t) { timer = &t; }
 
-      /// Numeric factorisations since construction (direct solver).
+      /// Numeric factorisations since construction (direct solver, and the
+      /// iterative solver's fallbacks).
       unsigned long factorisations() const { return n_factorisations; }
+
+      /// Whether solve() needs set_null_space() first (AMG with rigid-body
+      /// modes, or with the line smoother, which needs the coordinates).
+      bool needs_null_space() const
+      {
+        return prm.type == parameters::LinearSolverType::iterative &&
+               (prm.amg_null_space ==
+                  parameters::AmgNullSpace::rigid_body_modes ||
+                prm.amg_smoother == parameters::AmgSmoother::line_gauss_seidel);
+      }
+      /// The near null space and node coordinates for the next AMG set-up
+      /// (the old preconditioner, which may point to the old ones, goes).
+      void set_null_space(NullSpace &&space)
+      {
+        amg.reset();
+        null_space = std::move(space);
+      }
 
       /// Memory of the last MUMPS factorisation on all ranks (MB); 0 for the
       /// Amesos solvers.
@@ -78,18 +97,28 @@ namespace formsolve
       unsigned long long                            factorised_nnz    = 0;
       double                                        last_condition    = 0;
       unsigned long                                 n_factorisations  = 0;
+      NullSpace                                     null_space;
+      /// The last solve was direct (its factors serve solve_again()).
+      bool last_direct = true;
       /// The factorisation is that of last_matrix's current values (else it
       /// is an older one, used as a preconditioner).
       bool factors_current = false;
 
-      /// Direct with reuse: GMRES on @p A preconditioned by the stored
-      /// factorisation; false if it does not converge within the limit.
-      bool reuse(const dealii::TrilinosWrappers::SparseMatrix &A,
-                 dealii::TrilinosWrappers::MPI::Vector        &x,
-                 const dealii::TrilinosWrappers::MPI::Vector  &b,
-                 unsigned int                                 &iterations);
-      /// Numeric factorisation of the operator's current values, then one
-      /// substitution; returns 1.
+      /// GMRES on @p A preconditioned by the stored factorisation (an older
+      /// one, or low-rank factors), to the reuse tolerance; false if it does
+      /// not converge within @p max_iterations.
+      bool gmres_with_factors(const dealii::TrilinosWrappers::SparseMatrix &A,
+                              dealii::TrilinosWrappers::MPI::Vector        &x,
+                              const dealii::TrilinosWrappers::MPI::Vector  &b,
+                              const unsigned int max_iterations,
+                              unsigned int      &iterations);
+      /// x = A^-1 b with the factors of A's current values: one substitution,
+      /// or GMRES when they are low-rank; returns the iterations.
+      unsigned int
+      apply_current_factors(dealii::TrilinosWrappers::MPI::Vector       &x,
+                            const dealii::TrilinosWrappers::MPI::Vector &b);
+      /// Numeric factorisation of the operator's current values, then
+      /// apply_current_factors().
       unsigned int
       factorise_and_substitute(dealii::TrilinosWrappers::MPI::Vector       &x,
                                const dealii::TrilinosWrappers::MPI::Vector &b);
@@ -97,6 +126,17 @@ namespace formsolve
       void substitute(dealii::TrilinosWrappers::MPI::Vector       &x,
                       const dealii::TrilinosWrappers::MPI::Vector &b);
 
+      unsigned int solve_direct(const dealii::TrilinosWrappers::SparseMatrix &A,
+                                dealii::TrilinosWrappers::MPI::Vector        &x,
+                                const dealii::TrilinosWrappers::MPI::Vector &b);
+      /// ML on @p A with the null space and smoother of the parameters.
+      void initialise_amg(const dealii::TrilinosWrappers::SparseMatrix &A);
+      /// The iterative solve; if it does not converge, the direct one (or an
+      /// exception with Fallback to direct = false).
+      unsigned int
+      iterate_or_fall_back(const dealii::TrilinosWrappers::SparseMatrix &A,
+                           dealii::TrilinosWrappers::MPI::Vector        &x,
+                           const dealii::TrilinosWrappers::MPI::Vector  &b);
       unsigned int iterate(const dealii::TrilinosWrappers::SparseMatrix &A,
                            dealii::TrilinosWrappers::MPI::Vector        &x,
                            const dealii::TrilinosWrappers::MPI::Vector  &b);

@@ -28,6 +28,10 @@ namespace formsolve
         /// MUMPS ICNTL(10): at most this many steps of iterative
         /// refinement, stopped by MUMPS's backward-error test.
         unsigned int refinement_steps = 0;
+        /// Block low-rank factorisation (MUMPS ICNTL(35) = 2) with this
+        /// dropping tolerance (CNTL(7)); 0: full rank. The factors are then
+        /// approximate: solve with them as a preconditioner.
+        double low_rank_tolerance = 0;
       };
 
       MumpsDirect(const MPI_Comm comm, const Settings &settings);
@@ -45,7 +49,8 @@ namespace formsolve
 
       /// Memory the last factorisation used on all ranks (MB, INFOG(22)).
       double memory_mb() const;
-      /// Entries in the factors (INFOG(29); LDL^T stores one triangle).
+      /// Entries in the factors (INFOG(29); LDL^T stores one triangle;
+      /// after low-rank compression INFOG(35)).
       double factor_entries() const;
 
     private:
