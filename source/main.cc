@@ -3,6 +3,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <formsolve/app/blas_kernel.h>
 #include <formsolve/app/error_exit.h>
 #include <formsolve/parameters/command_line.h>
 #include <formsolve/parameters/parameters.h>
@@ -51,6 +52,7 @@ namespace
 int main(int argc, char **argv)
 {
   using namespace dealii;
+  formsolve::app::select_blas_kernel(argv); // before MPI: it may restart
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   formsolve::app::prepare_error_exit();

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <formsolve/app/blas_kernel.h>
 #include <formsolve/app/error_exit.h>
 #include <formsolve/contact/contact_search.h>
 #include <formsolve/geometry/blank_mesh.h>
@@ -258,7 +259,8 @@ namespace formsolve
             << state.dof_handler.n_dofs() << " DoFs (Q" << prm.mesh.degree
             << ", " << prm.mesh.layers << " layers), contact "
             << step_solver.strategy_name() << ", forces scaled by "
-            << prm.geometry.symmetry_factor() << " to the full part\n";
+            << prm.geometry.symmetry_factor() << " to the full part; BLAS "
+            << app::blas_kernel() << "\n";
       if (resume)
         pcout << "resumed from the checkpoint at step " << state.step
               << ", punch travel " << state.tools.punch_travel() << " mm"
