@@ -6,12 +6,15 @@
 # factorisation and substitution; factorisations per step; memory per DoF;
 # then the exponent alpha of time per iteration ~ N^alpha.
 # Writes doc/scaling.csv and prints the table of doc/performance.md.
-# Usage: bash benchmarks/scaling.sh [--force] [max level, default 7]
+# Usage: [TAG=name] bash benchmarks/scaling.sh [--force] [max level, default 7]
+#   TAG: runs in results/scaling-TAG/ and the table in doc/scaling-TAG.csv
+#   (default: results/scaling/, doc/scaling.csv).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=$root/build/formsolve
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
-out=$root/results/scaling
+out=$root/results/scaling${TAG:+-$TAG}
+csv=$root/doc/scaling${TAG:+-$TAG}.csv
 mkdir -p "$out"
 FORCE=""
 MAX=7
@@ -46,7 +49,7 @@ fi
 if [ "$MAX" -ge 7 ]; then
   run l7-2ranks 2 7 0.25 && runs+=("l7-2ranks 2")
 fi
-PYTHONPATH="$root/benchmarks" /usr/bin/python3 - "$out" "$root/doc/scaling.csv" "${runs[@]}" <<'PY'
+PYTHONPATH="$root/benchmarks" /usr/bin/python3 - "$out" "$csv" "${runs[@]}" <<'PY'
 import math, sys
 from run_tables import section, summary, write
 out, csv_path = sys.argv[1:3]

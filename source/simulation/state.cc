@@ -79,15 +79,21 @@ namespace formsolve
       displacement.reinit(owned, comm);
       velocity_ghost.reinit(owned, relevant, comm);
       displacement_ghost.reinit(owned, relevant, comm);
-      mapping =
-        std::make_unique<MappingQEulerian<dim, VectorType>>(prm.mesh.degree,
-                                                            dof_handler,
-                                                            displacement_ghost);
+      mapping = std::make_unique<model::CurrentMapping<dim>>(prm.mesh.degree);
+      update_mapping();
       history.clear();
       assembler.initialize_history(dof_handler, history);
       contact::ContactSearch<dim>(prm.contact.search_distance)
         .setup(dof_handler, reference_mapping, contact_set);
       contact_state.reset(contact_set.nodes.size(), tools.size());
+    }
+
+    template <int dim>
+    void State<dim>::update_mapping()
+    {
+      // The owned vector: MappingQCache makes its own ghosted copy (and
+      // cannot import from a ghosted Trilinos vector).
+      mapping->initialize(reference_mapping, dof_handler, displacement, true);
     }
 
     template <int dim>
@@ -109,6 +115,7 @@ namespace formsolve
                                history);
       displacement.add(dt, velocity);
       displacement_ghost = displacement;
+      update_mapping();
       tools.advance(dt);
       time += dt;
       ++step;
@@ -171,6 +178,7 @@ namespace formsolve
       constraints.distribute(displacement);
       velocity_ghost     = velocity;
       displacement_ghost = displacement;
+      update_mapping();
       for (unsigned int k = 0; k < contact_set.nodes.size(); ++k)
         for (unsigned int t = 0; t < tools.size(); ++t)
           {

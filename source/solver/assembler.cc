@@ -6,6 +6,7 @@
 #include <formsolve/model/dimensions.h>
 #include <formsolve/model/position_order.h>
 #include <formsolve/solver/assembler.h>
+#include <formsolve/solver/cell_tangent.h>
 
 #include <algorithm>
 #include <limits>
@@ -78,11 +79,15 @@ namespace formsolve
                              update_default,
                              &reference_mapping);
 
+      CellTangent<dim>                     tangent(fe,
+                               kf.n_points(),
+                               kr.n_points(),
+                               kinematics.axisymmetric());
       FullMatrix<double>                   K(n, n);
       Vector<double>                       r(n);
       std::vector<SymmetricTensor<2, 3>>   D, Dr;
       std::vector<ShapeStrain>             B;
-      std::vector<double>                  tr(n), s(n), t(n), div_v;
+      std::vector<double>                  tr(n), s(n), u(n), div_v;
       std::vector<types::global_dof_index> dofs(n);
       const double                         Kv     = material.bulk_viscosity();
       double                               f_int2 = 0;
@@ -96,7 +101,6 @@ namespace formsolve
           {
             kf.reinit(cell);
             kr.reinit(cell);
-            K = 0;
             r = 0;
             kf.rates(v, D);
             const auto h = history.get_data(cell);
@@ -115,28 +119,24 @@ namespace formsolve
                                        m.strain_rate_deviator,
                                        material.cutoff_rate()) *
                            m.equivalent_strain_rate;
+                // d s'/dD = 2 mu P_dev + beta D' (x) D'  (doc/theory.md,
+                // eq. 4, 4b): s = B : D', u = beta_h/2 s + beta_p t with
+                // t = B : w.
+                const double mu     = m.viscosity * dV;
+                const double beta_h = (m.beta - m.beta_plastic) * dV;
+                const double beta_p = 0.5 * m.beta_plastic * dV;
                 for (unsigned int i = 0; i < n; ++i)
                   {
-                    tr[i] = B[i].trace();
-                    s[i]  = B[i].contract(m.strain_rate_deviator);
-                    t[i]  = dual ? B[i].contract(w_rate) : s[i];
                     r[i] += B[i].contract(m.deviatoric_stress) * dV;
+                    if (matrix)
+                      {
+                        s[i] = B[i].contract(m.strain_rate_deviator);
+                        u[i] = 0.5 * beta_h * s[i] +
+                               beta_p * (dual ? B[i].contract(w_rate) : s[i]);
+                      }
                   }
                 if (matrix)
-                  {
-                    // d s'/dD = 2 mu P_dev + beta D' (x) D'  (doc/theory.md,
-                    // eq. 4, 4b), in the scalar form B_i : B_j.
-                    const double mu     = m.viscosity * dV;
-                    const double beta_h = (m.beta - m.beta_plastic) * dV;
-                    const double beta_p = 0.5 * m.beta_plastic * dV;
-                    for (unsigned int i = 0; i < n; ++i)
-                      for (unsigned int j = 0; j <= i; ++j)
-                        K(i, j) +=
-                          2. * mu *
-                            (model::contract(B[i], B[j]) - tr[i] * tr[j] / 3.) +
-                          beta_h * s[i] * s[j] +
-                          beta_p * (s[i] * t[j] + t[i] * s[j]);
-                  }
+                  tangent.add_deviatoric(q, B, mu, s, u);
               }
             // Incompressibility by penalty, reduced integration against
             // locking.
@@ -151,14 +151,10 @@ namespace formsolve
                     r[i] += Kv * div_v[q] * tr[i] * dV;
                   }
                 if (matrix)
-                  for (unsigned int i = 0; i < n; ++i)
-                    for (unsigned int j = 0; j <= i; ++j)
-                      K(i, j) += Kv * tr[i] * tr[j] * dV;
+                  tangent.add_volumetric(q, tr, Kv * dV);
               }
             if (matrix)
-              for (unsigned int i = 0; i < n; ++i)
-                for (unsigned int j = i + 1; j < n; ++j)
-                  K(i, j) = K(j, i);
+              tangent.finish(K);
             f_int2 += r.norm_sqr();
             cell->get_dof_indices(dofs);
             if (matrix)

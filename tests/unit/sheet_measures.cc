@@ -62,6 +62,7 @@ namespace
         }
     state.displacement.compress(VectorOperation::insert);
     state.displacement_ghost = state.displacement;
+    state.update_mapping();
     state.update_contact_areas();
 
     postprocess::SheetMeasures<dim> sheet(prm);

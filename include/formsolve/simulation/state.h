@@ -8,12 +8,12 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
-#include <deal.II/fe/mapping_q_eulerian.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <formsolve/contact/contact_set.h>
 #include <formsolve/contact/contact_state.h>
+#include <formsolve/model/current_mapping.h>
 #include <formsolve/model/kinematics.h>
 #include <formsolve/parameters/parameters.h>
 #include <formsolve/simulation/quadrature_history.h>
@@ -65,6 +65,9 @@ namespace formsolve
       /// fresh contact state for the current mesh (after creation or
       /// adaptation).
       void setup_dofs(const solver::Assembler<dim> &assembler);
+      /// The mapping's support points from the displacement: after every
+      /// change of it.
+      void update_mapping();
       /// Contact nodal areas in the current configuration.
       void update_contact_areas();
 
@@ -101,7 +104,9 @@ namespace formsolve
       dealii::IndexSet                                  owned, relevant;
       dealii::AffineConstraints<double>                 constraints;
       dealii::MappingQ<dim>                             reference_mapping;
-      std::unique_ptr<dealii::MappingQEulerian<dim, VectorType>> mapping;
+      /// The current configuration (reference mapping + displacement),
+      /// refreshed by update_mapping().
+      std::unique_ptr<model::CurrentMapping<dim>> mapping;
 
       VectorType          velocity, displacement;             // owned
       VectorType          velocity_ghost, displacement_ghost; // ghosted

@@ -1,0 +1,126 @@
+#include <formsolve/model/dimensions.h>
+#include <formsolve/solver/cell_tangent.h>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    using namespace dealii;
+
+    template <int dim>
+    CellTangent<dim>::CellTangent(const FiniteElement<dim> &fe,
+                                  const unsigned int        n_points,
+                                  const unsigned int        n_reduced_points,
+                                  const bool                hoop)
+        : n_psi(dim + (hoop ? 1 : 0))
+        , hoop(hoop)
+    {
+      const unsigned int n = fe.n_dofs_per_cell();
+      component.resize(n);
+      node.resize(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          component[i] = fe.system_to_component_index(i).first;
+          node[i]      = fe.system_to_component_index(i).second;
+        }
+      Assert(fe.n_components() == dim && n % dim == 0, ExcInternalError());
+      const unsigned int n_scalar = n / dim;
+      psi.reinit(n_points, n_scalar * n_psi);
+      psi_w.reinit(n_points, n_scalar * n_psi);
+      S.reinit(n_points, n);
+      U.reinit(n_points, n);
+      T.reinit(n_reduced_points, n);
+      T_w.reinit(n_reduced_points, n);
+      P.reinit(n_scalar * n_psi, n_scalar * n_psi);
+      E.reinit(n, n);
+      V.reinit(n, n);
+    }
+
+    template <int dim>
+    void
+    CellTangent<dim>::add_deviatoric(const unsigned int                     q,
+                                     const std::vector<model::ShapeStrain> &B,
+                                     const double                           mu,
+                                     const std::vector<double>             &s,
+                                     const std::vector<double>             &u)
+    {
+      // The components of one node share the scalar gradient: take it (and
+      // phi/r, carried by the radial component) from component 0.
+      for (unsigned int i = 0; i < B.size(); ++i)
+        {
+          if (component[i] == 0)
+            {
+              for (unsigned int k = 0; k < dim; ++k)
+                {
+                  psi(q, column(node[i], k))   = B[i].gradient[k];
+                  psi_w(q, column(node[i], k)) = mu * B[i].gradient[k];
+                }
+              if (hoop)
+                {
+                  psi(q, column(node[i], dim))   = B[i].hoop;
+                  psi_w(q, column(node[i], dim)) = mu * B[i].hoop;
+                }
+            }
+          S(q, i) = s[i];
+          U(q, i) = u[i];
+        }
+    }
+
+    template <int dim>
+    void CellTangent<dim>::add_volumetric(const unsigned int         q,
+                                          const std::vector<double> &tr,
+                                          const double               weight)
+    {
+      for (unsigned int i = 0; i < tr.size(); ++i)
+        {
+          T(q, i)   = tr[i];
+          T_w(q, i) = weight * tr[i];
+        }
+    }
+
+    template <int dim>
+    void CellTangent<dim>::finish(FullMatrix<double> &K)
+    {
+      psi.Tmmult(P, psi_w);
+      S.Tmmult(E, U);
+      T.Tmmult(V, T_w);
+      const unsigned int n = component.size();
+      const unsigned int h = dim; // the phi/r column
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            const unsigned int a = node[i], c = component[i];
+            const unsigned int b = node[j], d = component[j];
+            // 2 mu B_i : B_j with B_i = sym(e_c (x) g_a) + hoop
+            // = mu (delta_cd g_a.g_b + g_a[d] g_b[c]) + 2 mu h_i h_j.
+            double bb = P(column(a, d), column(b, c));
+            if (c == d)
+              for (unsigned int k = 0; k < dim; ++k)
+                bb += P(column(a, k), column(b, k));
+            // mu tr_i tr_j with tr_i = g_a[c] + h_i.
+            double tt = P(column(a, c), column(b, d));
+            if (hoop)
+              {
+                const double hh = P(column(a, h), column(b, h));
+                if (c == 0 && d == 0)
+                  bb += 2. * hh, tt += hh;
+                if (d == 0)
+                  tt += P(column(a, c), column(b, h));
+                if (c == 0)
+                  tt += P(column(a, h), column(b, d));
+              }
+            K(i, j) = bb - 2. / 3. * tt + E(i, j) + E(j, i) + V(i, j);
+          }
+      psi   = 0;
+      psi_w = 0;
+      S     = 0;
+      U     = 0;
+      T     = 0;
+      T_w   = 0;
+    }
+
+#define INSTANTIATE(dim) template class CellTangent<dim>;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace solver
+} // namespace formsolve
