@@ -130,8 +130,10 @@ def execute(run, force):
         for f in ("history.csv", "run-summary.txt"):
             if os.path.exists(os.path.join(out, f)):
                 os.remove(os.path.join(out, f))
-        cmd = [EXE, PRM, "--set", "Output/Output directory=" + out]
-        for key, value in LEGACY + run["sets"]:
+        # A run may name its own scene (contact_charts_process.py: the
+        # default process, prm/cup-drawing.prm as it is).
+        cmd = [EXE, run.get("prm", PRM), "--set", "Output/Output directory=" + out]
+        for key, value in run.get("base", LEGACY) + run["sets"]:
             cmd += ["--set", "%s=%s" % (key, value)]
         start = time.time()
         with open(os.path.join(out, "log.txt"), "w") as log:
