@@ -199,6 +199,36 @@ COLORS = {"fixed": "tab:gray", "adaptive": "tab:blue", "adaptive-strict": "tab:g
           "augmented-lagrangian (fixed)": "tab:red", "augmented-lagrangian (adaptive)": "tab:purple"}
 
 
+def speed_panels(axes, runs, ok, tag_of, xlabel):
+    """Max penetration and peak-force error (r["force_error"]) against wall time
+    on two axes; runs not in @p ok are drawn as failed, those without any row
+    listed in a corner."""
+    for ax, key, label in ((axes[0], "max_penetration", "max penetration over the run (mm)"),
+                           (axes[1], "force_error", "|peak punch force - reference| / reference")):
+        for r in runs:
+            y = r[key]
+            if not (y > 0 and math.isfinite(y)):
+                continue  # the reference itself (zero error), or no row at all (listed below)
+            failed = r not in ok
+            ax.scatter(r["wall"], y, marker="x" if failed else "o", s=40, color=COLORS.get(r["kind"], "k"))
+            tag = tag_of(r)
+            if failed:
+                tag += " FAILED (%s, %.1f mm)" % (r["status"], r["final_travel"])
+            ax.annotate(tag, (r["wall"], y), fontsize=6, xytext=(3, 3), textcoords="offset points",
+                        color="tab:red" if failed else "k")
+        early = ["%s (%s in step %d, %.0f s)" % (tag_of(r), r["status"], r["steps"] + 1, r["wall"])
+                 for r in runs if r not in ok and r["steps"] == 0]
+        if early:
+            ax.text(0.98, 0.98, "failed at once:\n" + "\n".join(early), transform=ax.transAxes, fontsize=7,
+                    ha="right", va="top", color="tab:red")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(label)
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].axhline(1e-3, color="k", lw=0.8, ls="--")
+
+
 def chart_speed(runs, plt):
     ok = [r for r in runs if r["status"] in ("converged", "penetration > delta")]
     ref_runs = [r for r in ok if r["name"] == "adaptive-strict-0.0001"]
@@ -209,35 +239,8 @@ def chart_speed(runs, plt):
               ["name", "kind", "eps", "delta", "status", "steps", "final_travel", "wall", "max_penetration",
                "peak_force", "force_error", "newton_per_step", "passes"])
     fig, axes = plt.subplots(1, 2, figsize=(13, 5.2))
-    for ax, key, label in ((axes[0], "max_penetration", "max penetration over the run (mm)"),
-                           (axes[1], "force_error", "|peak punch force - reference| / reference")):
-        for r in runs:
-            y = r[key]
-            if not (y > 0 and math.isfinite(y)):
-                if r in ok:
-                    continue  # zero error: the reference itself
-                y = None
-            failed = r not in ok
-            c = COLORS.get(r["kind"], "k")
-            if y is None:  # failed before any row: listed below
-                continue
-            ax.scatter(r["wall"], y, marker="x" if failed else "o", s=40, color=c)
-            tag = r["name"].replace("adaptive-strict", "strict").replace("fixed-", "")
-            if failed:
-                tag += " FAILED (%s, %.1f mm)" % (r["status"], r["final_travel"])
-            ax.annotate(tag, (r["wall"], y), fontsize=6, xytext=(3, 3), textcoords="offset points",
-                        color="tab:red" if failed else "k")
-        early = ["%s (%s in step %d, %.0f s)" % (r["name"], r["status"], r["steps"] + 1, r["wall"])
-                 for r in runs if r not in ok and r["steps"] == 0]
-        if early:
-            ax.text(0.98, 0.98, "failed at once:\n" + "\n".join(early), transform=ax.transAxes, fontsize=7,
-                    ha="right", va="top", color="tab:red")
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("wall time of the run (s, 1 rank, 2 runs at a time on 2 cores)")
-        ax.set_ylabel(label)
-        ax.grid(True, which="both", alpha=0.3)
-    axes[0].axhline(1e-3, color="k", lw=0.8, ls="--")
+    speed_panels(axes, runs, ok, lambda r: r["name"].replace("adaptive-strict", "strict").replace("fixed-", ""),
+                 "wall time of the run (s, 1 rank, 2 runs at a time on 2 cores)")
     handles = [plt.Line2D([], [], marker="o", ls="", color=c, label=k) for k, c in COLORS.items()]
     handles.append(plt.Line2D([], [], marker="x", ls="", color="k", label="failed (partial run)"))
     axes[0].legend(handles=handles, fontsize=7, loc="lower left")

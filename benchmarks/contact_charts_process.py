@@ -64,36 +64,16 @@ def runs_process_stability():
 
 
 def speed_panels(axes, runs, plt):
-    """Penetration and force error against wall time for one model's runs."""
+    """One model's runs: force error against its adaptive-strict delta = 1e-4
+    run, then contact_charts' two panels. Returns the reference force."""
     ok = [r for r in runs if r["status"] in ("converged", "penetration > delta")]
     ref_runs = [r for r in ok if r["kind"] == "adaptive-strict" and r["delta"] == 1e-4]
     ref = ref_runs[0]["peak_force"] if ref_runs else float("nan")
     for r in runs:
         r["force_error"] = abs(r["peak_force"] - ref) / ref if r in ok else float("nan")
-    for ax, key, label in ((axes[0], "max_penetration", "max penetration over the run (mm)"),
-                           (axes[1], "force_error", "|peak punch force - reference| / reference")):
-        for r in runs:
-            y = r[key]
-            if not (y > 0 and math.isfinite(y)):
-                continue  # the reference itself (zero error), or no row at all (listed)
-            failed = r not in ok
-            ax.scatter(r["wall"], y, marker="x" if failed else "o", s=40, color=cc.COLORS.get(r["kind"], "k"))
-            tag = r["name"].split("-", 1)[1].replace("adaptive-strict", "strict").replace("fixed-", "")
-            if failed:
-                tag += " FAILED (%s, %.1f mm)" % (r["status"], r["final_travel"])
-            ax.annotate(tag, (r["wall"], y), fontsize=6, xytext=(3, 3), textcoords="offset points",
-                        color="tab:red" if failed else "k")
-        early = ["%s (%s, step %d)" % (r["name"].split("-", 1)[1], r["status"], r["steps"] + 1)
-                 for r in runs if r not in ok and r["steps"] == 0]
-        if early:
-            ax.text(0.98, 0.98, "failed at once:\n" + "\n".join(early), transform=ax.transAxes, fontsize=7,
-                    ha="right", va="top", color="tab:red")
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("wall time of the full draw (s, 1 rank, 2 runs at a time on 2 cores)")
-        ax.set_ylabel(label)
-        ax.grid(True, which="both", alpha=0.3)
-    axes[0].axhline(1e-3, color="k", lw=0.8, ls="--")
+    cc.speed_panels(axes, runs, ok,
+                    lambda r: r["name"].split("-", 1)[1].replace("adaptive-strict", "strict").replace("fixed-", ""),
+                    "wall time of the full draw (s, 1 rank, 2 runs at a time on 2 cores)")
     return ref
 
 
