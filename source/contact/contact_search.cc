@@ -16,10 +16,8 @@ namespace formsolve
     using namespace dealii;
 
     template <int dim>
-    ContactSearch<dim>::ContactSearch(const double       search_distance,
-                                      const unsigned int max_status_flips)
+    ContactSearch<dim>::ContactSearch(const double search_distance)
         : search_distance(search_distance)
-        , max_status_flips(max_status_flips)
     {}
 
     template <int dim>
@@ -29,7 +27,6 @@ namespace formsolve
     {
       set.nodes.clear();
       set.pairs.clear();
-      set.begin_solve();
       const auto &fe    = dof_handler.get_fe();
       const auto  owned = dof_handler.locally_owned_dofs();
       std::map<types::global_dof_index, Point<dim>> support;
@@ -150,30 +147,6 @@ namespace formsolve
               pair.active = pair.predicted_gap < pair.shift && pair.area > 0;
               set.pairs.push_back(pair);
             }
-        }
-
-      // Chatter guard: count status changes per pair within the solve; once
-      // a pair has changed max_status_flips times it is locked: its status no
-      // longer counts as a change and its stiffness stays in the tangent
-      // (contact_law.cc), while its force still follows the contact law.
-      const unsigned int n = set.pairs.size();
-      if (set.flips.size() != n)
-        {
-          set.flips.assign(n, 0);
-          set.locked.assign(n, -1);
-          set.previous_active.resize(n);
-          for (unsigned int k = 0; k < n; ++k)
-            set.previous_active[k] = set.pairs[k].active;
-          return;
-        }
-      for (unsigned int k = 0; k < n; ++k)
-        {
-          auto &pair = set.pairs[k];
-          if (set.locked[k] < 0 && pair.active != set.previous_active[k] &&
-              ++set.flips[k] >= max_status_flips)
-            set.locked[k] = 1;
-          pair.locked            = set.locked[k] >= 0;
-          set.previous_active[k] = pair.active;
         }
     }
 

@@ -27,8 +27,7 @@ namespace formsolve
       for (unsigned int k = 0; k < set.pairs.size(); ++k)
         {
           const auto &pair = set.pairs[k];
-          if (set.locked.size() == set.pairs.size() && set.locked[k] >= 0)
-            ++s.n_locked;
+          s.n_locked += pair.locked;
           if (!pair.active)
             continue;
           const auto f =

@@ -85,8 +85,10 @@ namespace formsolve
       prm.declare_entry("Max status flips",
                         "4",
                         Integer(1),
-                        "Contact status changes of one node in one step after "
-                        "which its status is locked for the rest of the step.");
+                        "Contact status changes of one node-tool pair within "
+                        "one Newton solve (each strict or Uzawa pass is a "
+                        "solve) after which its status is locked for the rest "
+                        "of the solve.");
       prm.declare_entry(
         "Max strict passes",
         "5",

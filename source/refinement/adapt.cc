@@ -17,18 +17,25 @@ namespace formsolve
                            const RefinementCriteria<dim> &criteria,
                            const solver::Assembler<dim>  &assembler)
     {
-      AdaptReport report;
-      auto       &tria     = state.tria;
       state.velocity_ghost = state.velocity;
       const auto flags     = criteria.mark(state.dof_handler,
                                        *state.mapping,
                                        state.velocity_ghost,
                                        state.tools);
-      report.refine        = flags.refine;
-      report.coarsen       = flags.coarsen;
       if (flags.refine + flags.coarsen == 0)
-        return report;
+        return AdaptReport();
+      AdaptReport report = adapt_flagged(state, assembler);
+      report.refine      = flags.refine;
+      report.coarsen     = flags.coarsen;
+      return report;
+    }
 
+    template <int dim>
+    AdaptReport adapt_flagged(simulation::State<dim>       &state,
+                              const solver::Assembler<dim> &assembler)
+    {
+      AdaptReport report;
+      auto       &tria = state.tria;
       // Smoothing drops coarsening flags of incomplete families (and adds
       // refinement for the 2:1 balance): count what is left.
       tria.prepare_coarsening_and_refinement();
@@ -98,7 +105,9 @@ namespace formsolve
 #define INSTANTIATE(dim)                                           \
   template AdaptReport adapt_mesh(simulation::State<dim> &,        \
                                   const RefinementCriteria<dim> &, \
-                                  const solver::Assembler<dim> &);
+                                  const solver::Assembler<dim> &); \
+  template AdaptReport adapt_flagged(simulation::State<dim> &,     \
+                                     const solver::Assembler<dim> &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace refinement

@@ -139,6 +139,7 @@ namespace formsolve
           all["time"]         = exact_text(state.time);
           all["step"]         = std::to_string(state.step);
           all["coarse_cells"] = std::to_string(state.tria.n_cells(0));
+          all["fields"]       = std::to_string(values.size());
           for (unsigned int t = 0; t < state.tools.size(); ++t)
             {
               const auto key         = "tool." + std::to_string(t);
@@ -215,11 +216,17 @@ namespace formsolve
                   ExcMessage("--resume: the checkpoint in " + from +
                              " was written by a formsolve with another "
                              "coarse mesh; start the run again"));
+      AssertThrow(meta.count("fields") &&
+                    std::stoul(meta.at("fields")) ==
+                      2 + State<dim>::record_fields * state.tools.size(),
+                  ExcMessage("--resume: the checkpoint in " + from +
+                             " was written by a formsolve that stores "
+                             "other fields; start the run again"));
       state.tria.load(from + "/mesh");
       state.setup_dofs(assembler);
       parallel::distributed::SolutionTransfer<dim, VectorType> fields(
         state.dof_handler);
-      std::vector<VectorType>   values(2 + 3 * state.tools.size(),
+      std::vector<VectorType>   values(state.n_transferable_fields(),
                                      VectorType(state.owned, state.comm));
       std::vector<VectorType *> out;
       for (auto &v : values)

@@ -145,17 +145,19 @@ namespace formsolve
           ghosted = f;
           f.swap(ghosted);
         }
-      // Three records per tool, at the node's first DoF.
-      std::vector<VectorType> records(3 * tools.size(),
+      // The records' persistent values per tool, at the node's first DoF.
+      std::vector<VectorType> records(record_fields * tools.size(),
                                       VectorType(owned, comm));
       for (unsigned int k = 0; k < contact_set.nodes.size(); ++k)
         for (unsigned int t = 0; t < tools.size(); ++t)
           {
-            const auto &r           = contact_state(k, t);
-            const auto  dof         = contact_set.nodes[k].dofs[0];
-            records[3 * t][dof]     = r.factor;
-            records[3 * t + 1][dof] = r.scale;
-            records[3 * t + 2][dof] = r.shift;
+            const auto &r   = contact_state(k, t);
+            const auto  dof = contact_set.nodes[k].dofs[0];
+            auto       *f   = &records[record_fields * t];
+            f[0][dof]       = r.factor;
+            f[1][dof]       = r.scale;
+            f[2][dof]       = r.shift;
+            f[3][dof]       = r.active ? 1. : 0.;
           }
       for (auto &r : records)
         {
@@ -171,7 +173,7 @@ namespace formsolve
     void
     State<dim>::set_transferable_fields(const std::vector<VectorType> &fields)
     {
-      Assert(fields.size() == 2 + 3 * tools.size(), ExcInternalError());
+      Assert(fields.size() == n_transferable_fields(), ExcInternalError());
       velocity     = fields[0];
       displacement = fields[1];
       constraints.distribute(velocity);
@@ -179,16 +181,20 @@ namespace formsolve
       velocity_ghost     = velocity;
       displacement_ghost = displacement;
       update_mapping();
+      // Flips and locks belong to one solve and start again with the next.
       for (unsigned int k = 0; k < contact_set.nodes.size(); ++k)
         for (unsigned int t = 0; t < tools.size(); ++t)
           {
-            auto      &r   = contact_state(k, t);
-            const auto dof = contact_set.nodes[k].dofs[0];
-            r.factor       = fields[2 + 3 * t][dof];
+            auto       &r   = contact_state(k, t);
+            const auto  dof = contact_set.nodes[k].dofs[0];
+            const auto *f   = &fields[2 + record_fields * t];
+            r.factor        = f[0][dof];
             // A node new to the surface takes its neighbours' mean: a scale
-            // of at least 1, a multiplier of at least 0.
-            r.scale = std::max(1., double(fields[3 + 3 * t][dof]));
-            r.shift = std::max(0., double(fields[4 + 3 * t][dof]));
+            // of at least 1, a multiplier of at least 0, the status of the
+            // majority.
+            r.scale  = std::max(1., double(f[1][dof]));
+            r.shift  = std::max(0., double(f[2][dof]));
+            r.active = f[3][dof] >= 0.5;
           }
     }
 

@@ -28,7 +28,7 @@ namespace formsolve
         , assembler(assembler)
         , strategy(strategy)
         , timer(timer)
-        , search(prm.contact.search_distance, prm.contact.max_status_flips)
+        , search(prm.contact.search_distance)
         , use_dual(prm.nonlinear.tangent ==
                    parameters::Tangent::stress_velocity)
     {}
@@ -95,7 +95,7 @@ namespace formsolve
     template <int dim>
     void FormingSystem<dim>::begin_solve()
     {
-      state.contact_set.begin_solve();
+      state.contact_state.begin_solve();
       strategy.begin_solve();
       w_accepted = w_trial = state.holder.velocity;
       dw                   = 0;
@@ -130,6 +130,8 @@ namespace formsolve
                         dt,
                         state.contact_state,
                         state.contact_set);
+        state.contact_state.track_status(state.contact_set,
+                                         prm.contact.max_status_flips);
       }
       // Body first: an adaptive strategy reads its residual and tangent;
       // then the factors, then the contact terms with them.

@@ -22,10 +22,7 @@ namespace formsolve
     class ContactSearch
     {
     public:
-      /// A pair whose status changes @p max_status_flips times in a solve
-      /// keeps its status for the rest of it (chatter guard).
-      ContactSearch(const double       search_distance,
-                    const unsigned int max_status_flips = 1000000);
+      explicit ContactSearch(const double search_distance);
 
       /// Collect the locally owned nodes on faces with the free-surface id.
       void setup(const dealii::DoFHandler<dim> &dof_handler,
@@ -49,8 +46,7 @@ namespace formsolve
                     ContactSet<dim>           &set) const;
 
     private:
-      double       search_distance;
-      unsigned int max_status_flips;
+      double search_distance;
     };
   } // namespace contact
 } // namespace formsolve

@@ -41,7 +41,7 @@ namespace formsolve
       Tensor<1, dim> relative_velocity; // v - v_tool (mm/s)
       double         area;   // projected nodal area facing the tool (mm^2)
       bool           active; // predicted_gap < shift
-      bool           locked = false; // status frozen by the chatter guard
+      bool           locked = false; // ContactState::track_status: frozen
       /// Augmented Lagrangian: multiplier as a gap shift s = lambda/eps (mm),
       /// read from the contact state; the normal force is eps <s - g_pred>.
       double shift = 0;
@@ -52,19 +52,6 @@ namespace formsolve
     {
       std::vector<ContactNode<dim>> nodes; // locally owned surface nodes
       std::vector<ContactPair<dim>> pairs; // pairs within the search distance
-
-      /// Status memory within one solve: pair indices are stable within a
-      /// step (the pairs depend on the start-of-step geometry only).
-      std::vector<unsigned int> flips;  // status changes per pair
-      std::vector<int>          locked; // -1 free, else the locked status
-      std::vector<bool>         previous_active;
-
-      void begin_solve()
-      {
-        flips.clear();
-        locked.clear();
-        previous_active.clear();
-      }
 
       unsigned int n_active() const
       {

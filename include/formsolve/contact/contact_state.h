@@ -1,8 +1,13 @@
-// The contact state that lives across iterations and steps, one record per
-// (sheet surface node, tool). Only penalty strategies write it; the contact
-// search reads the multiplier through shift(). The State owns it, so step
-// control restores it with the rest of a rejected step.
+// The contact state that lives across iterations, solves and steps: one
+// record per (sheet surface node, tool). Penalty strategies write the factor,
+// the strict scale and the multiplier; track_status() writes the status and
+// the chatter guard. The contact search reads the multiplier through
+// shift(). The State owns it, so step control restores it with the rest of
+// a rejected step, and refinement carries it over (State::
+// transferable_fields).
 #pragma once
+
+#include <formsolve/contact/contact_set.h>
 
 #include <vector>
 
@@ -15,6 +20,9 @@ namespace formsolve
       double factor = 0; // last estimated penalty factor (N/mm), 0: none yet
       double scale  = 1; // adaptive-strict: persistent factor scaling (-)
       double shift  = 0; // augmented Lagrangian: lambda/eps as a gap (mm)
+      bool   active = false;       // status at the last evaluated iterate
+      unsigned int flips  = 0;     // status changes in the current solve
+      bool         locked = false; // chatter guard: status frozen this solve
     };
 
     class ContactState
@@ -25,7 +33,21 @@ namespace formsolve
       {
         tools = n_tools;
         records.assign(n_nodes * n_tools, ContactRecord());
+        baseline = true;
       }
+
+      /// A Newton solve begins: no flips, nothing locked; the next
+      /// track_status() only records the status.
+      void begin_solve();
+
+      /// After each contact search: records the status of every pair of
+      /// @p set and counts its changes within the solve. A pair that has
+      /// changed @p max_flips times is locked for the rest of the solve
+      /// (ContactPair::locked: its change no longer counts, its stiffness
+      /// stays in the tangent, its force still follows the law). Pair
+      /// indices change between steps, records do not.
+      template <int dim>
+      void track_status(ContactSet<dim> &set, const unsigned int max_flips);
 
       ContactRecord &operator()(const unsigned int node,
                                 const unsigned int tool)
@@ -46,7 +68,8 @@ namespace formsolve
       unsigned int size() const { return records.size(); }
 
     private:
-      unsigned int               tools = 0;
+      unsigned int               tools    = 0;
+      bool                       baseline = true;
       std::vector<ContactRecord> records;
     };
   } // namespace contact

@@ -28,5 +28,11 @@ namespace formsolve
     AdaptReport adapt_mesh(simulation::State<dim>        &state,
                            const RefinementCriteria<dim> &criteria,
                            const solver::Assembler<dim>  &assembler);
+
+    /// The same for the refinement and coarsening flags already set on
+    /// @p state's triangulation (locally owned cells), whoever set them.
+    template <int dim>
+    AdaptReport adapt_flagged(simulation::State<dim>       &state,
+                              const solver::Assembler<dim> &assembler);
   } // namespace refinement
 } // namespace formsolve

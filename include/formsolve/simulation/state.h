@@ -78,10 +78,16 @@ namespace formsolve
       void         restore(const StepSnapshot &s);
 
       /// The fields a mesh change or a checkpoint must carry, as ghosted
-      /// nodal vectors: velocity, displacement, and the contact state (last
-      /// factor, strict scale and multiplier per tool, at each contact
-      /// node's first DoF).
+      /// nodal vectors: velocity, displacement, and the contact state (per
+      /// tool: last factor, strict scale, multiplier and status, at each
+      /// contact node's first DoF).
       std::vector<VectorType> transferable_fields() const;
+      /// Their number.
+      unsigned int n_transferable_fields() const
+      {
+        return 2 + record_fields * tools.size();
+      }
+      static constexpr unsigned int record_fields = 4;
       /// Takes the fields of transferable_fields() (locally owned vectors on
       /// the current mesh, after setup_dofs()) back.
       void set_transferable_fields(const std::vector<VectorType> &fields);
