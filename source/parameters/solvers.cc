@@ -122,8 +122,20 @@ namespace formsolve
       prm.declare_entry("Correction tolerance",
                         "1e-6",
                         Double(0),
-                        "... and |dv| <= tol * |v| (-), and the contact set is "
+                        "... and the velocity error left, by Correction "
+                        "measure, is <= tol * |v| (-), and the contact set is "
                         "unchanged.");
+      prm.declare_entry(
+        "Correction measure",
+        "contraction",
+        Selection("contraction|last correction"),
+        "The velocity error compared with Correction tolerance. last "
+        "correction: |dv| of the iteration just taken, which bounds the "
+        "error before it. contraction: the error it leaves, theta/(1 - "
+        "theta) |dv| with theta = |dv_k|/|dv_k-1| the contraction of two "
+        "full Newton steps in a row that did not change the contact set, "
+        "where theta <= 1/2 (Deuflhard's estimate; |dv| elsewhere). It saves "
+        "the last iteration of a quadratically converging solve.");
       prm.declare_entry(
         "Max line search steps",
         "6",
@@ -158,6 +170,9 @@ namespace formsolve
       max_iterations        = prm.get_integer("Max iterations");
       residual_tolerance    = prm.get_double("Residual tolerance");
       correction_tolerance  = prm.get_double("Correction tolerance");
+      correction_measure    = prm.get("Correction measure") == "contraction"
+                                ? CorrectionMeasure::contraction
+                                : CorrectionMeasure::last;
       max_line_search_steps = prm.get_integer("Max line search steps");
       picard_iterations     = prm.get_integer("Picard iterations");
       picard_fallback       = prm.get_bool("Picard fallback");

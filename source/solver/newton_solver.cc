@@ -39,6 +39,9 @@ namespace formsolve
           << std::setprecision(2) << r / std::max(system.force_scale(), 1e-300)
           << std::defaultfloat << system.iteration_info() << std::endl;
       NonlinearSystem::VectorType dv(v), trial(v);
+      // The last correction, for the contraction estimate.
+      bool   last_full = false;
+      double last_step = 0, last_xstep = 0;
 
       for (unsigned int it = 1; it <= prm.max_iterations; ++it)
         {
@@ -137,8 +140,27 @@ namespace formsolve
             r_trial = r_new;
           const bool   changed = system.contact_set_changed();
           const double scale   = system.force_scale();
-          const double dv_rel =
-            alpha * dv.l2_norm() / std::max(v.l2_norm(), 1e-300);
+          const double step    = alpha * dv.l2_norm();
+          const double xstep   = alpha * system.extra_correction();
+          const double dv_rel  = step / std::max(v.l2_norm(), 1e-300);
+          // The error this correction leaves (doc/theory.md section 8):
+          // where two full steps in a row contract by theta <= 1/2, at most
+          // theta/(1 - theta) of it; else the correction itself.
+          const bool full = alpha == 1 && !changed;
+          double     left = 1;
+          if (prm.correction_measure ==
+                parameters::CorrectionMeasure::contraction &&
+              full && last_full && last_step > 0)
+            {
+              const double theta =
+                std::max(step / last_step,
+                         last_xstep > 0 ? xstep / last_xstep : 0.);
+              if (theta <= 0.5)
+                left = theta / (1 - theta);
+            }
+          last_full       = full;
+          last_step       = step;
+          last_xstep      = xstep;
           r               = r_trial;
           m               = merit(r);
           report.residual = r / std::max(scale, 1e-300);
@@ -149,9 +171,9 @@ namespace formsolve
               << (changed ? "  contact set changed" : "") << std::defaultfloat
               << system.iteration_info() << std::endl;
           if (report.residual <= prm.residual_tolerance &&
-              dv_rel <= prm.correction_tolerance && !changed &&
+              left * dv_rel <= prm.correction_tolerance && !changed &&
               system.extra_residual() <= prm.residual_tolerance &&
-              alpha * system.extra_correction() <= prm.correction_tolerance)
+              left * xstep <= prm.correction_tolerance)
             {
               report.converged = true;
               return report;

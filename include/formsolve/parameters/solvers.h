@@ -39,19 +39,27 @@ namespace formsolve
       stress_velocity // the stress direction linearised with the velocity
     };
 
+    /// What the correction tolerance is compared with.
+    enum class CorrectionMeasure
+    {
+      last,       // the last correction |dv|
+      contraction // the error it leaves, from the contraction of full steps
+    };
+
     struct NonlinearSolver
     {
       Tangent tangent = Tangent::stress_velocity;
       /// Friction stiffness (K + K^T)/2: a symmetric tangent, at the price
       /// of an inexact Newton step under sliding friction.
-      bool         symmetrise_friction   = false;
-      unsigned int max_iterations        = 60;
-      double       residual_tolerance    = 1e-6;
-      double       correction_tolerance  = 1e-6;
-      unsigned int max_line_search_steps = 6;
-      unsigned int picard_iterations     = 0;
-      bool         picard_fallback       = true;
-      bool         log_iterations        = false;
+      bool              symmetrise_friction   = false;
+      unsigned int      max_iterations        = 60;
+      double            residual_tolerance    = 1e-6;
+      double            correction_tolerance  = 1e-6;
+      CorrectionMeasure correction_measure    = CorrectionMeasure::contraction;
+      unsigned int      max_line_search_steps = 6;
+      unsigned int      picard_iterations     = 0;
+      bool              picard_fallback       = true;
+      bool              log_iterations        = false;
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);
