@@ -169,7 +169,8 @@ namespace formsolve
           std::ostringstream what;
           what << "gives about " << cells << " cells and " << dofs
                << " DoFs, which need about " << needed / 1e9
-               << " GB (20 kB per DoF), more than the " << available / 1e9
+               << " GB (20 kB per DoF), more than 80 % of the "
+               << available / 1e9
                << " GB available; lower Mesh/Planform refinements or "
                   "Mesh/Layers through thickness";
           require(available == 0 || needed < 0.8 * available,
