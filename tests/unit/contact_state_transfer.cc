@@ -12,6 +12,7 @@
 #include <formsolve/solver/assembler.h>
 
 #include "check.h"
+#include "small_blank.h"
 
 #include <array>
 #include <cmath>
@@ -133,15 +134,8 @@ namespace
   template <int dim>
   void check(const std::string &name, const model::Model m)
   {
-    parameters::Run prm;
-    prm.geometry.model          = m;
-    prm.geometry.blank_shape    = dim == 2 ? parameters::BlankShape::round
-                                           : parameters::BlankShape::rectangle;
-    prm.geometry.blank_diameter = 20;
-    prm.geometry.blank_length   = 20;
-    prm.geometry.blank_width    = 20;
-    prm.geometry.thickness      = 1;
-    prm.mesh                    = {1, 2, dim == 2 ? 4u : 2u};
+    const parameters::Run prm =
+      test::small_blank(m, {1, 2, dim == 2 ? 4u : 2u});
     const material::RigidViscoplastic material(prm.material);
     simulation::State<dim>            state(prm, MPI_COMM_WORLD);
     const solver::Assembler<dim>      assembler(material,

@@ -10,6 +10,7 @@
 #include <formsolve/solver/assembler.h>
 
 #include "check.h"
+#include "small_blank.h"
 
 using namespace dealii;
 using namespace formsolve;
@@ -23,15 +24,7 @@ namespace
              const double          major,
              const double          minor)
   {
-    parameters::Run prm;
-    prm.geometry.model          = m;
-    prm.geometry.blank_shape    = dim == 2 ? parameters::BlankShape::round
-                                           : parameters::BlankShape::rectangle;
-    prm.geometry.blank_diameter = 20;
-    prm.geometry.blank_length   = 20;
-    prm.geometry.blank_width    = 20;
-    prm.geometry.thickness      = 1;
-    prm.mesh                    = {1, 4, 2};
+    const parameters::Run             prm = test::small_blank(m, {1, 4, 2});
     const material::RigidViscoplastic material(prm.material);
     const material::DamageCriteria    damage(prm.material);
     simulation::State<dim>            state(prm, MPI_COMM_WORLD);
