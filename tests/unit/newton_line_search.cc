@@ -8,6 +8,12 @@
 //    whose equation alone is off at the start, with the body in equilibrium:
 //    the exact Newton step must be taken whole (the line search measures the
 //    body and the extra residual together, not |r| of the body alone).
+// 3. Convergence on the error left (Correction measure = contraction,
+//    doc/theory.md eq. 10a) on r(x) = x + x^3 - 10 (root 2), where only the
+//    correction criterion decides: from several starts and tolerances the
+//    returned x is within the tolerance of the root (the estimate bounds
+//    the error), never after more iterations than with the last correction,
+//    and after fewer in at least one case.
 #include <deal.II/base/mpi.h>
 
 #include <formsolve/solver/newton_solver.h>
@@ -15,6 +21,7 @@
 #include "check.h"
 
 #include <cmath>
+#include <sstream>
 
 using namespace formsolve;
 
@@ -110,6 +117,37 @@ namespace
     double     x = 0, dw = 0;
     VectorType r;
   };
+  // r(x) = x + x^3 - 10 with its exact Newton step.
+  class CubicSystem : public solver::NonlinearSystem
+  {
+  public:
+    explicit CubicSystem(const dealii::IndexSet &owned)
+        : r(owned, MPI_COMM_WORLD)
+    {}
+    double assemble(const VectorType &v, const bool /*newton*/) override
+    {
+      x    = v[0];
+      r[0] = x + x * x * x - 10;
+      r.compress(dealii::VectorOperation::insert);
+      return r.l2_norm();
+    }
+    double force_scale() const override { return 1; }
+    double directional_derivative(const VectorType &dv) const override
+    {
+      return r * dv;
+    }
+    unsigned int solve(VectorType &dv) override
+    {
+      dv[0] = -r[0] / (1 + 3 * x * x);
+      dv.compress(dealii::VectorOperation::insert);
+      return 1;
+    }
+    bool contact_set_changed() override { return false; }
+
+  private:
+    double     x = 0;
+    VectorType r;
+  };
 } // namespace
 
 int main(int argc, char **argv)
@@ -143,5 +181,46 @@ int main(int argc, char **argv)
             << std::endl;
   test::close("extra unknown: the whole Newton step", extra.w, 1, 1e-12);
   test::close("extra unknown: body follows", x[0], 1, 1e-12);
+
+  unsigned int fewer = 0;
+  for (const double start : {1., 5., -3.})
+    for (const double tol : {1e-3, 1e-6, 1e-9})
+      {
+        unsigned int iterations[2];
+        double       error[2];
+        for (const auto measure : {parameters::CorrectionMeasure::last,
+                                   parameters::CorrectionMeasure::contraction})
+          {
+            parameters::NonlinearSolver q;
+            q.residual_tolerance   = 1e10; // the correction decides
+            q.correction_tolerance = tol;
+            q.correction_measure   = measure;
+            q.picard_fallback      = false;
+            CubicSystem                         cubic(one);
+            solver::NonlinearSystem::VectorType c(one, MPI_COMM_WORLD);
+            c[0] = start;
+            c.compress(dealii::VectorOperation::insert);
+            const auto report =
+              solver::NewtonSolver(q,
+                                   dealii::ConditionalOStream(std::cout, false))
+                .solve(cubic, c);
+            const unsigned int k =
+              measure == parameters::CorrectionMeasure::contraction;
+            iterations[k] = report.converged ? report.iterations : 1000;
+            error[k]      = std::abs(c[0] - 2) / 2;
+          }
+        std::ostringstream name;
+        name << "cubic from " << start << ", tol " << tol << ": ";
+        const std::string what = name.str();
+        std::cout << what << iterations[0] << " iterations (last correction), "
+                  << iterations[1] << " (contraction)" << std::endl;
+        test::close(what + "error within the tolerance", error[1] <= tol, 1, 0);
+        test::close(what + "no more iterations",
+                    iterations[1] <= iterations[0],
+                    1,
+                    0);
+        fewer += iterations[1] < iterations[0];
+      }
+  test::close("contraction saved an iteration somewhere", fewer > 0, 1, 0);
   return test::result();
 }
