@@ -134,15 +134,9 @@ namespace
   template <int dim>
   void check(const std::string &name, const model::Model m)
   {
-    const parameters::Run prm =
-      test::small_blank(m, {1, 2, dim == 2 ? 4u : 2u});
-    const material::RigidViscoplastic material(prm.material);
-    simulation::State<dim>            state(prm, MPI_COMM_WORLD);
-    const solver::Assembler<dim>      assembler(material,
-                                           state.kinematics,
-                                           state.reference_mapping,
-                                           1);
-    state.create_mesh(assembler);
+    test::SmallBlank<dim> blank(m, {1, 2, dim == 2 ? 4u : 2u});
+    auto                 &state     = blank.state;
+    const auto           &assembler = blank.assembler;
     AssertThrow(state.tools.size() >= 2, ExcInternalError());
 
     const unsigned int last = state.tools.size() - 1;

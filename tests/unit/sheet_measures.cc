@@ -24,15 +24,10 @@ namespace
              const double          major,
              const double          minor)
   {
-    const parameters::Run             prm = test::small_blank(m, {1, 4, 2});
-    const material::RigidViscoplastic material(prm.material);
-    const material::DamageCriteria    damage(prm.material);
-    simulation::State<dim>            state(prm, MPI_COMM_WORLD);
-    const solver::Assembler<dim>      assembler(material,
-                                           state.kinematics,
-                                           state.reference_mapping,
-                                           1);
-    state.create_mesh(assembler);
+    test::SmallBlank<dim>          blank(m, {1, 4, 2});
+    const parameters::Run         &prm   = blank.prm;
+    auto                          &state = blank.state;
+    const material::DamageCriteria damage(prm.material);
 
     // u = (diag(e^l) - I) X at every node.
     std::map<types::global_dof_index, Point<dim>> points;

@@ -1,8 +1,13 @@
-// The parameters of a small test blank: 20 mm across, 1 mm thick, round for
-// the axisymmetric model, square otherwise, the default tools.
+// A small test blank: 20 mm across, 1 mm thick, round for the axisymmetric
+// model, square otherwise, the default tools; its State meshed with the
+// default material's assembler.
 #pragma once
 
+#include <deal.II/base/mpi.h>
+
 #include <formsolve/parameters/parameters.h>
+#include <formsolve/simulation/state.h>
+#include <formsolve/solver/assembler.h>
 
 namespace test
 {
@@ -23,4 +28,25 @@ namespace test
     prm.mesh                    = mesh;
     return prm;
   }
+
+  /// The parameters of small_blank(), their material, a meshed State and
+  /// its assembler (members in construction order).
+  template <int dim>
+  struct SmallBlank
+  {
+    SmallBlank(const formsolve::model::Model      m,
+               const formsolve::parameters::Mesh &mesh)
+        : prm(small_blank(m, mesh))
+        , material(prm.material)
+        , state(prm, MPI_COMM_WORLD)
+        , assembler(material, state.kinematics, state.reference_mapping, 1)
+    {
+      state.create_mesh(assembler);
+    }
+
+    const formsolve::parameters::Run             prm;
+    const formsolve::material::RigidViscoplastic material;
+    formsolve::simulation::State<dim>            state;
+    const formsolve::solver::Assembler<dim>      assembler;
+  };
 } // namespace test
