@@ -25,7 +25,9 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-EXE = os.path.join(ROOT, "build", "formsolve")
+# FORMSOLVE_EXE: another binary (e.g. a copy, so that a long map keeps one
+# build while build/ is rebuilt).
+EXE = os.environ.get("FORMSOLVE_EXE", os.path.join(ROOT, "build", "formsolve"))
 PRM = os.path.join(ROOT, "prm", "cup-drawing-3d.prm")
 # The scene doc/contact.md measured (before the process model of issue 8):
 # quarter model, uniform level 4 x 4 layers, blank holder at a fixed 0.05 mm

@@ -10,9 +10,16 @@ prm/cup-drawing.prm as it is, blank holder under force control, drawn through
                      time step x (fixed eps | delta), for the default punch
                      radius r_p = 8 mm and for r_p = 2 mm (the sharpest radius
                      of the reference cups)
+  process-stability-quarter
+                     the same map for the quarter 3-D model (planform level 3,
+                     4 layers) at time steps 0.25, 0.5 and 1 s, with fixed eps
+                     1e3 and 1e5 to 1e9, adaptive delta = 1e-3 mm and
+                     adaptive-strict delta = 1e-3 and 1e-4 mm; 300 s per run at
+                     most (a longer run is a timeout)
 
 Runs go to results/contact-charts/<group>/<name>/ and are reused unless --force.
-Usage: /usr/bin/python3 benchmarks/contact_charts_process.py [--jobs N] [--force] [--groups process,process-stability]
+Usage: /usr/bin/python3 benchmarks/contact_charts_process.py [--jobs N] [--force]
+           [--groups process,process-stability,process-stability-quarter]
 """
 import argparse
 import math
@@ -27,6 +34,10 @@ QUARTER = [("Geometry/Model", "quarter"), ("Mesh refinement/Interval", "0"),
 MODELS = {"axisymmetric": [], "quarter": QUARTER}
 RADII = [8, 2]
 STEPS = [0.125, 0.25, 0.5, 1.0]
+QUARTER_STEPS = [0.25, 0.5, 1.0]
+QUARTER_METHODS = {("adaptive", 1e-3), ("adaptive-strict", 1e-3), ("adaptive-strict", 1e-4)}
+# 1e2 and 1e4 behave as 1e3 in every cell of the axisymmetric map but one.
+QUARTER_EPS = [3, 5, 6, 7, 8, 9]
 
 
 def strategies(eps_exponents):
@@ -50,15 +61,19 @@ def runs_process():
     return runs
 
 
-def runs_process_stability():
+def runs_process_stability(model="axisymmetric"):
     runs = []
+    quarter = model == "quarter"
     for rp in RADII:
-        for dt in STEPS:
-            for name, kind, eps, delta, extra in strategies(range(2, 10)):
-                runs.append(dict(group="process-stability", name="rp%g-dt%g-%s" % (rp, dt, name), kind=kind,
-                                 eps=eps, delta=delta, rp=rp, dt=dt, prm=PROCESS_PRM, timeout=900,
-                                 base=QUIET + [("Tools/Punch/Profile radius", str(rp)),
-                                               ("Time stepping/Time step", str(dt))],
+        for dt in QUARTER_STEPS if quarter else STEPS:
+            for name, kind, eps, delta, extra in strategies(QUARTER_EPS if quarter else range(2, 10)):
+                if quarter and kind != "fixed" and (kind, delta) not in QUARTER_METHODS:
+                    continue
+                runs.append(dict(group="process-stability" + ("-quarter" if quarter else ""),
+                                 name="rp%g-dt%g-%s" % (rp, dt, name), kind=kind,
+                                 eps=eps, delta=delta, rp=rp, dt=dt, prm=PROCESS_PRM, timeout=300 if quarter else 900,
+                                 base=QUIET + MODELS[model] + [("Tools/Punch/Profile radius", str(rp)),
+                                                               ("Time stepping/Time step", str(dt))],
                                  sets=extra))
     return runs
 
@@ -95,15 +110,19 @@ def chart_process(runs, plt):
     fig.savefig(os.path.join(cc.DOC, "contact-process-speed-accuracy.png"), dpi=130)
 
 
-def chart_process_stability(runs, plt):
-    cc.write_csv(os.path.join(cc.DOC, "contact-process-stability.csv"), runs,
+def chart_process_stability(runs, plt, model="axisymmetric"):
+    quarter = model == "quarter"
+    stem = "contact-process-stability" + ("-quarter" if quarter else "")
+    steps = QUARTER_STEPS if quarter else STEPS
+    cc.write_csv(os.path.join(cc.DOC, stem + ".csv"), runs,
                  ["name", "kind", "eps", "delta", "rp", "dt", "status", "steps", "final_travel", "wall",
                   "max_penetration", "newton_per_step", "passes"])
     fig, axes = plt.subplots(2, 2, figsize=(13, 8.5))
-    rows = [(s, d) for s in ("adaptive", "adaptive-strict") for d in cc.DELTAS]
+    rows = [(s, d) for s in ("adaptive", "adaptive-strict") for d in cc.DELTAS
+            if not quarter or (s, d) in QUARTER_METHODS]
     for col, rp in enumerate(RADII):
         for r in (r for r in runs if r["rp"] == rp):
-            x = STEPS.index(r["dt"])
+            x = steps.index(r["dt"])
             fixed = r["kind"] == "fixed"
             ax = axes[0 if fixed else 1][col]
             y = math.log10(r["eps"]) if fixed else rows.index((r["kind"], r["delta"]))
@@ -119,25 +138,25 @@ def chart_process_stability(runs, plt):
         axes[1][col].set_yticks(range(len(rows)))
         axes[1][col].set_yticklabels(["%s d=%g" % (s.replace("adaptive-strict", "strict"), d) for s, d in rows])
         for a in (axes[0][col], axes[1][col]):
-            a.set_xticks(range(len(STEPS)))
-            a.set_xticklabels([str(v) for v in STEPS])
-            a.set_xlim(-0.5, len(STEPS) - 0.5)
+            a.set_xticks(range(len(steps)))
+            a.set_xticklabels([str(v) for v in steps])
+            a.set_xlim(-0.5, len(steps) - 0.5)
             a.set_xlabel("time step (s) = punch travel per step (mm)")
             a.set_title("punch profile radius r_p = %g mm" % rp, fontsize=9)
             a.grid(True, alpha=0.3)
     handles = [plt.Line2D([], [], marker=m, ls="", color=c, label=k) for k, (m, c) in cc.STATUS_STYLE.items()]
     axes[0][0].legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(0, 1.3), ncol=3)
-    fig.suptitle("Stability map, full draw of the axisymmetric default process (numbers: max penetration, mm; "
+    fig.suptitle("Stability map, full draw of the %s default process (numbers: max penetration, mm; " % model +
                  "@: travel reached by a failed run; fixed eps judged against delta = 1e-3 mm)", fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(cc.DOC, "contact-process-stability.png"), dpi=130)
+    fig.savefig(os.path.join(cc.DOC, stem + ".png"), dpi=130)
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--jobs", type=int, default=os.cpu_count())
     ap.add_argument("--force", action="store_true")
-    ap.add_argument("--groups", default="process,process-stability")
+    ap.add_argument("--groups", default="process,process-stability,process-stability-quarter")
     a = ap.parse_args()
     import matplotlib
     matplotlib.use("Agg")
@@ -147,6 +166,8 @@ def main():
         chart_process(cc.execute_all(runs_process(), a.jobs, a.force), plt)
     if "process-stability" in groups:
         chart_process_stability(cc.execute_all(runs_process_stability(), a.jobs, a.force), plt)
+    if "process-stability-quarter" in groups:
+        chart_process_stability(cc.execute_all(runs_process_stability("quarter"), a.jobs, a.force), plt, "quarter")
 
 
 if __name__ == "__main__":

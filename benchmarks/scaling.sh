@@ -6,12 +6,14 @@
 # factorisation and substitution; factorisations per step; memory per DoF;
 # then the exponent alpha of time per iteration ~ N^alpha.
 # Writes doc/scaling.csv and prints the table of doc/performance.md.
-# Usage: [TAG=name] bash benchmarks/scaling.sh [--force] [max level, default 7]
+# Usage: [TAG=name] [SET="section/entry=value"] bash benchmarks/scaling.sh [--force] [max level, default 7]
 #   TAG: runs in results/scaling-TAG/ and the table in doc/scaling-TAG.csv
 #   (default: results/scaling/, doc/scaling.csv).
+#   SET: one more parameter for every run, e.g.
+#   SET="Linear solver/Unsymmetric tangent=symmetric part".
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-exe=$root/build/formsolve
+exe=${FORMSOLVE_EXE:-$root/build/formsolve} # FORMSOLVE_EXE: another binary
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
 out=$root/results/scaling${TAG:+-$TAG}
 csv=$root/doc/scaling${TAG:+-$TAG}.csv
@@ -32,7 +34,8 @@ run() { # name ranks level stroke
       --set "Mesh/Layers through thickness=4" --set "Mesh/Planform refinements=$level" \
       --set "Contact/Penalty strategy=fixed" --set "Tools/Punch/Stroke=$stroke" \
       --set "Time stepping/End of run=stroke" --set "Output/Output interval=0" \
-      --set "Output/Revolved copy=false" --set "Output/Output directory=$out/$name") \
+      --set "Output/Revolved copy=false" --set "Output/Output directory=$out/$name" \
+      ${SET:+--set "$SET"}) \
       > "$out/$name.log" 2>&1 || { tail -3 "$out/$name.log"; return 1; }
   fi
 }

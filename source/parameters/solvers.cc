@@ -214,7 +214,25 @@ namespace formsolve
         "MUMPS: factorise as LDL^T (one triangle stored, about half the "
         "memory and time) whenever the tangent is symmetric, i.e. without "
         "friction or with Nonlinear solver/Friction tangent = symmetrised; "
-        "LU otherwise. false: always LU.");
+        "otherwise as Unsymmetric tangent says. false: always LU.");
+      prm.declare_entry(
+        "Unsymmetric tangent",
+        "LU",
+        Selection("LU|symmetric part"),
+        "MUMPS, a tangent K that is not symmetric (sliding friction with "
+        "Friction tangent = exact). LU: factorise K (exact factors, solved "
+        "by one substitution). symmetric part: factorise LDL^T of the "
+        "symmetric part (K + K^T)/2 (about 0.6x the memory of LU and faster) "
+        "and solve K by GMRES preconditioned by it, to Reuse tolerance "
+        "within Symmetric-part iterations; Newton keeps the exact tangent. "
+        "On several ranks, entries whose transpose lies on another rank are "
+        "taken from K's lower triangle.");
+      prm.declare_entry(
+        "Symmetric-part iterations",
+        "30",
+        Integer(1, 1000),
+        "Unsymmetric tangent = symmetric part: GMRES iterations allowed "
+        "before the linear solve fails (the Newton step is then cut back).");
       prm.declare_entry(
         "Ordering",
         "METIS",
@@ -320,6 +338,10 @@ namespace formsolve
                                    : direct == "Amesos MUMPS" ? DirectSolver::amesos_mumps
                                                               : DirectSolver::klu;
       symmetric_factorisation    = prm.get_bool("Symmetric factorisation");
+      unsymmetric_factors        = prm.get("Unsymmetric tangent") == "LU"
+                                     ? UnsymmetricFactors::lu
+                                     : UnsymmetricFactors::symmetric_part;
+      symmetric_part_iterations  = prm.get_integer("Symmetric-part iterations");
       metis_order                = prm.get("Ordering") == "METIS";
       refinement_steps           = prm.get_integer("Refinement steps");
       iterative_solver           = prm.get("Iterative solver") == "CG"
@@ -364,6 +386,18 @@ namespace formsolve
       require(low_rank_tolerance == 0 || refinement_steps == 0,
               "Linear solver/Low-rank tolerance",
               "> 0 needs Refinement steps = 0 (GMRES refines the solve)");
+      const bool symmetric_part =
+        unsymmetric_factors == UnsymmetricFactors::symmetric_part;
+      require(!symmetric_part || (type == LinearSolverType::direct &&
+                                  direct_solver == DirectSolver::mumps &&
+                                  symmetric_factorisation),
+              "Linear solver/Unsymmetric tangent",
+              "= symmetric part needs Type = direct, Direct solver = MUMPS "
+              "and Symmetric factorisation = true");
+      require(!symmetric_part || refinement_steps == 0,
+              "Linear solver/Unsymmetric tangent",
+              "= symmetric part needs Refinement steps = 0 (GMRES refines "
+              "the solve)");
     }
   } // namespace parameters
 } // namespace formsolve

@@ -111,9 +111,13 @@ namespace formsolve
       if (!same_pattern && prm.direct_solver == parameters::DirectSolver::mumps)
         {
           MumpsDirect::Settings settings;
-          settings.symmetric        = symmetric && prm.symmetric_factorisation;
-          settings.metis_order      = prm.metis_order;
-          settings.refinement_steps = prm.refinement_steps;
+          settings.symmetric_part =
+            !symmetric && prm.unsymmetric_factors ==
+                            parameters::UnsymmetricFactors::symmetric_part;
+          settings.symmetric = prm.symmetric_factorisation &&
+                               (symmetric || settings.symmetric_part);
+          settings.metis_order        = prm.metis_order;
+          settings.refinement_steps   = prm.refinement_steps;
           settings.low_rank_tolerance = prm.low_rank_tolerance;
           mumps.reset();
           const auto t = phase(timer, "linear solve: analysis");
@@ -236,21 +240,32 @@ namespace formsolve
     LinearSolver::apply_current_factors(TrilinosWrappers::MPI::Vector       &x,
                                         const TrilinosWrappers::MPI::Vector &b)
     {
-      if (prm.low_rank_tolerance == 0)
+      const bool low_rank = prm.low_rank_tolerance > 0;
+      const bool symmetric_part =
+        mumps != nullptr && mumps->factors_symmetric_part();
+      if (!low_rank && !symmetric_part)
         {
           substitute(x, b);
           return 1;
         }
-      // Low-rank factors are approximate: GMRES makes the solve as exact as
-      // the reuse tolerance asks.
+      // Low-rank factors, or those of the symmetric part, are approximate:
+      // GMRES makes the solve as exact as the reuse tolerance asks.
+      const unsigned int limit =
+        (low_rank ? prm.low_rank_iterations : 0) +
+        (symmetric_part ? prm.symmetric_part_iterations : 0);
       x                = 0;
       unsigned int its = 0;
       AssertThrow(
-        gmres_with_factors(*last_matrix, x, b, prm.low_rank_iterations, its),
-        ExcMessage("GMRES with the low-rank factors did not reach Linear "
-                   "solver/Reuse tolerance within Low-rank iterations = " +
-                   std::to_string(prm.low_rank_iterations) +
-                   "; lower Linear solver/Low-rank tolerance"));
+        gmres_with_factors(*last_matrix, x, b, limit, its),
+        ExcMessage(
+          std::string("GMRES with the ") +
+          (low_rank ? "low-rank factors" : "factors of the symmetric part") +
+          " did not reach Linear solver/Reuse tolerance within " +
+          std::to_string(limit) + " iterations (" +
+          (low_rank
+             ? "Low-rank iterations; lower Linear solver/Low-rank tolerance"
+             : "Symmetric-part iterations; or Unsymmetric tangent = LU") +
+          ")"));
       return its;
     }
 

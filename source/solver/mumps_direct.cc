@@ -30,6 +30,10 @@ namespace formsolve
       std::vector<double> values;
       /// Per row-view entry of the local matrix: kept in the input.
       std::vector<bool> kept;
+      /// symmetric_part: per input entry, the local row and the position in
+      /// its row view of the transposed entry; -1 if not on this rank (or
+      /// on the diagonal).
+      std::vector<int> mirror_row, mirror_position;
       /// Pivot order (root, 1-based).
       std::vector<int> pivot_position;
       /// Right-hand side gather: global index of each local row; on the
@@ -42,11 +46,13 @@ namespace formsolve
         : data(std::make_unique<Data>())
         , settings(s)
     {
-      auto &id        = data->id;
-      data->comm      = comm;
-      data->root      = Utilities::MPI::this_mpi_process(comm) == 0;
-      id.job          = -1;
-      id.par          = 1; // the host works too
+      auto &id   = data->id;
+      data->comm = comm;
+      data->root = Utilities::MPI::this_mpi_process(comm) == 0;
+      id.job     = -1;
+      id.par     = 1; // the host works too
+      Assert(settings.symmetric || !settings.symmetric_part,
+             ExcInternalError());
       id.sym          = settings.symmetric ? 2 : 0;
       id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
       dmumps_c(&id);
@@ -132,6 +138,8 @@ namespace formsolve
             }
         }
       d.values.resize(d.irn.size());
+      if (settings.symmetric_part)
+        find_mirrors(A);
       id.n = m.NumGlobalRows();
       if (Utilities::MPI::n_mpi_processes(d.comm) == 1)
         {
@@ -230,6 +238,32 @@ namespace formsolve
       call(1, "analysis");
     }
 
+    void MumpsDirect::find_mirrors(const TrilinosWrappers::SparseMatrix &A)
+    {
+      auto                   &d = *data;
+      const Epetra_CrsMatrix &m = A.trilinos_matrix();
+      d.mirror_row.assign(d.irn.size(), -1);
+      d.mirror_position.assign(d.irn.size(), -1);
+      for (std::size_t i = 0; i < d.irn.size(); ++i)
+        {
+          const int row = d.irn[i] - 1, column = d.jcn[i] - 1;
+          const int local = m.RowMap().LID(column);
+          if (row == column || local < 0)
+            continue;
+          int     length;
+          double *v;
+          int    *columns;
+          m.ExtractMyRowView(local, length, v, columns);
+          for (int k = 0; k < length; ++k)
+            if (m.ColMap().GID(columns[k]) == row)
+              {
+                d.mirror_row[i]      = local;
+                d.mirror_position[i] = k;
+                break;
+              }
+        }
+    }
+
     void MumpsDirect::copy_values(const TrilinosWrappers::SparseMatrix &A)
     {
       auto                   &d = *data;
@@ -253,6 +287,17 @@ namespace formsolve
       AssertThrow(e == d.kept.size(),
                   ExcMessage("MUMPS: the sparsity pattern changed since the "
                              "analysis"));
+      if (!settings.symmetric_part)
+        return;
+      for (std::size_t k = 0; k < d.values.size(); ++k)
+        if (d.mirror_row[k] >= 0)
+          {
+            int     length;
+            double *v;
+            int    *columns;
+            m.ExtractMyRowView(d.mirror_row[k], length, v, columns);
+            d.values[k] = 0.5 * (d.values[k] + v[d.mirror_position[k]]);
+          }
     }
 
     void MumpsDirect::factorise(const TrilinosWrappers::SparseMatrix &A)

@@ -77,6 +77,13 @@ namespace formsolve
       amesos_mumps, // MUMPS through Amesos (unsymmetric, automatic order)
       klu           // Amesos KLU (serial, gathered)
     };
+    /// MUMPS: how a tangent that is not symmetric (sliding friction) is
+    /// factorised.
+    enum class UnsymmetricFactors
+    {
+      lu,            // LU of the tangent: exact factors
+      symmetric_part // LDL^T of (K + K^T)/2, GMRES on K preconditioned by it
+    };
     enum class IterativeSolver
     {
       gmres,
@@ -101,7 +108,11 @@ namespace formsolve
       LinearSolverType type          = LinearSolverType::direct;
       DirectSolver     direct_solver = DirectSolver::mumps;
       /// MUMPS: LDL^T when the tangent is symmetric.
-      bool            symmetric_factorisation = true;
+      bool symmetric_factorisation = true;
+      /// MUMPS: the factors of an unsymmetric tangent.
+      UnsymmetricFactors unsymmetric_factors = UnsymmetricFactors::lu;
+      /// GMRES iterations allowed with the factors of the symmetric part.
+      unsigned int    symmetric_part_iterations = 30;
       bool            metis_order      = true; // else MUMPS's automatic (PORD)
       unsigned int    refinement_steps = 0;    // MUMPS iterative refinement
       IterativeSolver iterative_solver = IterativeSolver::gmres;

@@ -21,8 +21,14 @@ namespace formsolve
     public:
       struct Settings
       {
-        /// LDL^T of the lower triangle (the matrix must be symmetric).
+        /// LDL^T of the lower triangle (the matrix must be symmetric, or
+        /// symmetric_part be set).
         bool symmetric = false;
+        /// With symmetric: factorise (A + A^T)/2, so that A may be
+        /// unsymmetric; the factors are then approximate (a preconditioner).
+        /// An entry whose transpose lies in another rank's rows keeps A's
+        /// value.
+        bool symmetric_part = false;
         /// METIS nested dissection; else MUMPS's automatic choice (PORD).
         bool metis_order = true;
         /// MUMPS ICNTL(10): at most this many steps of iterative
@@ -47,6 +53,9 @@ namespace formsolve
       void solve(dealii::TrilinosWrappers::MPI::Vector       &x,
                  const dealii::TrilinosWrappers::MPI::Vector &b);
 
+      /// The factors are those of the symmetric part, not of the matrix.
+      bool factors_symmetric_part() const { return settings.symmetric_part; }
+
       /// Memory the last factorisation used on all ranks (MB, INFOG(22)).
       double memory_mb() const;
       /// Entries in the factors (INFOG(29); LDL^T stores one triangle;
@@ -59,8 +68,11 @@ namespace formsolve
       Settings              settings;
 
       /// Copies the values of @p A's stored entries (the triangle kept at
-      /// analysis) into the MUMPS input.
+      /// analysis) into the MUMPS input, averaged with their transposes when
+      /// symmetric_part is set.
       void copy_values(const dealii::TrilinosWrappers::SparseMatrix &A);
+      /// symmetric_part: where each input entry's transpose is stored.
+      void find_mirrors(const dealii::TrilinosWrappers::SparseMatrix &A);
       /// One MUMPS call (JOB = @p job), then check(@p what).
       void call(const int job, const char *what);
       /// Throws if MUMPS's last call failed (INFOG(1) < 0; the same on all
