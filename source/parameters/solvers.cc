@@ -1,6 +1,10 @@
 #include <formsolve/parameters/require.h>
 #include <formsolve/parameters/solvers.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+
 namespace formsolve
 {
   namespace parameters
@@ -325,6 +329,18 @@ namespace formsolve
         Integer(1, 1000),
         "GMRES iterations allowed with low-rank factors before the linear "
         "solve fails (the Newton step is then cut back).");
+      prm.declare_entry(
+        "Out-of-core directory",
+        "",
+        Anything(),
+        "Direct solver = MUMPS: an existing, writable directory (absolute, "
+        "or relative to the working directory) where MUMPS writes the "
+        "factors during each factorisation and reads them back for every "
+        "solve (out-of-core, ICNTL(22) = 1): the run holds only MUMPS's "
+        "working memory, at the price of disk traffic (doc/performance.md). "
+        "The files are removed when the factors are dropped; a run that is "
+        "killed leaves files named formsolve_* there. Empty: the factors stay "
+        "in memory.");
       prm.leave_subsection();
     }
 
@@ -352,17 +368,18 @@ namespace formsolve
                                      ? AmgNullSpace::translations
                                      : AmgNullSpace::rigid_body_modes;
       const std::string smoother = prm.get("AMG smoother");
-      amg_smoother         = smoother == "Chebyshev" ? AmgSmoother::chebyshev
-                             : smoother == "symmetric Gauss-Seidel"
-                               ? AmgSmoother::symmetric_gauss_seidel
-                               : AmgSmoother::line_gauss_seidel;
-      direct_fallback      = prm.get_bool("Fallback to direct");
-      max_iterations       = prm.get_integer("Max iterations");
-      condition_iterations = prm.get_integer("Condition estimate iterations");
-      reuse_iterations     = prm.get_integer("Reuse factorisation iterations");
-      reuse_tolerance      = prm.get_double("Reuse tolerance");
-      low_rank_tolerance   = prm.get_double("Low-rank tolerance");
-      low_rank_iterations  = prm.get_integer("Low-rank iterations");
+      amg_smoother          = smoother == "Chebyshev" ? AmgSmoother::chebyshev
+                              : smoother == "symmetric Gauss-Seidel"
+                                ? AmgSmoother::symmetric_gauss_seidel
+                                : AmgSmoother::line_gauss_seidel;
+      direct_fallback       = prm.get_bool("Fallback to direct");
+      max_iterations        = prm.get_integer("Max iterations");
+      condition_iterations  = prm.get_integer("Condition estimate iterations");
+      reuse_iterations      = prm.get_integer("Reuse factorisation iterations");
+      reuse_tolerance       = prm.get_double("Reuse tolerance");
+      low_rank_tolerance    = prm.get_double("Low-rank tolerance");
+      low_rank_iterations   = prm.get_integer("Low-rank iterations");
+      out_of_core_directory = prm.get("Out-of-core directory");
       prm.leave_subsection();
     }
 
@@ -398,6 +415,25 @@ namespace formsolve
               "Linear solver/Unsymmetric tangent",
               "= symmetric part needs Refinement steps = 0 (GMRES refines "
               "the solve)");
+      if (!out_of_core_directory.empty())
+        {
+          const std::string entry = "Linear solver/Out-of-core directory";
+          require(type == LinearSolverType::direct &&
+                    direct_solver == DirectSolver::mumps,
+                  entry,
+                  "needs Type = direct and Direct solver = MUMPS");
+          // MUMPS keeps the name in a 256-character field.
+          require(out_of_core_directory.size() < 200,
+                  entry,
+                  "'" + out_of_core_directory +
+                    "' is too long for MUMPS (at most 199 characters)");
+          std::error_code error;
+          require(std::filesystem::is_directory(out_of_core_directory, error) &&
+                    access(out_of_core_directory.c_str(), W_OK | X_OK) == 0,
+                  entry,
+                  "'" + out_of_core_directory +
+                    "' is not an existing, writable directory");
+        }
     }
   } // namespace parameters
 } // namespace formsolve

@@ -117,7 +117,9 @@ namespace formsolve
     bool TimeLoop<dim>::adapt()
     {
       TimerOutput::Scope t(timer, "mesh refinement");
-      const auto         r = refinement::adapt_mesh(state, criteria, assembler);
+      // The transfer needs memory; the factors would be dropped anyway.
+      step_solver.release_factors();
+      const auto r = refinement::adapt_mesh(state, criteria, assembler);
       if (!r.changed)
         return false;
       step_solver.reinit();
@@ -143,6 +145,9 @@ namespace formsolve
     void TimeLoop<dim>::write_output()
     {
       TimerOutput::Scope t(timer, "output");
+      // Output and checkpoints build buffers of the size of the state: free
+      // the factors first, so that they do not add to the run's peak.
+      step_solver.release_factors();
       state.velocity_ghost = state.velocity;
       contact_fields.fill(state,
                           step_solver.forming_system().penalty_factors(),
@@ -302,6 +307,7 @@ namespace formsolve
 
       auto save_checkpoint = [&]() {
         TimerOutput::Scope t(timer, "checkpoint");
+        step_solver.release_factors();
         summary.wall_time = seconds();
         checkpoint.save(state, loop_metadata(summary));
       };

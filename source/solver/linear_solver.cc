@@ -40,6 +40,16 @@ namespace formsolve
       return mumps ? mumps->factor_entries() : 0.;
     }
 
+    void LinearSolver::release_factors()
+    {
+      mumps.reset();
+      direct.reset();
+      problem.reset();
+      factorised_matrix = nullptr;
+      factorised_nnz    = 0;
+      factors_current   = false;
+    }
+
     LinearSolver::~LinearSolver() = default;
 
     namespace
@@ -116,9 +126,10 @@ namespace formsolve
                             parameters::UnsymmetricFactors::symmetric_part;
           settings.symmetric = prm.symmetric_factorisation &&
                                (symmetric || settings.symmetric_part);
-          settings.metis_order        = prm.metis_order;
-          settings.refinement_steps   = prm.refinement_steps;
-          settings.low_rank_tolerance = prm.low_rank_tolerance;
+          settings.metis_order           = prm.metis_order;
+          settings.refinement_steps      = prm.refinement_steps;
+          settings.low_rank_tolerance    = prm.low_rank_tolerance;
+          settings.out_of_core_directory = prm.out_of_core_directory;
           mumps.reset();
           const auto t = phase(timer, "linear solve: analysis");
           mumps =

@@ -8,6 +8,7 @@
 #include <dmumps_c.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 namespace formsolve
@@ -81,6 +82,18 @@ namespace formsolve
           ICNTL(36)  = 1;
           ICNTL(37)  = 1;
           id.cntl[6] = settings.low_rank_tolerance; // CNTL(7)
+        }
+      if (!settings.out_of_core_directory.empty())
+        {
+          // The factors, the bulk of MUMPS's memory, go to files that MUMPS
+          // names uniquely per rank and deletes at JOB = -2; the working
+          // memory of the fronts stays in core.
+          ICNTL(22) = 1;
+          std::snprintf(id.ooc_tmpdir,
+                        sizeof(id.ooc_tmpdir),
+                        "%s",
+                        settings.out_of_core_directory.c_str());
+          std::snprintf(id.ooc_prefix, sizeof(id.ooc_prefix), "formsolve");
         }
     }
 

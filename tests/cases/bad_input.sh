@@ -88,6 +88,12 @@ expect low_rank_amesos "Low-rank tolerance" "$base" --set "Linear solver/Low-ran
   --set "Linear solver/Direct solver=KLU"
 expect low_rank_refinement "Low-rank tolerance" "$base" --set "Linear solver/Low-rank tolerance=1e-8" \
   --set "Linear solver/Refinement steps=2"
+expect out_of_core_missing "Out-of-core directory" "$base" \
+  --set "Linear solver/Out-of-core directory=$work/no-such-directory"
+expect out_of_core_file "Out-of-core directory" "$base" \
+  --set "Linear solver/Out-of-core directory=$work/a-file"
+expect out_of_core_klu "Out-of-core directory" "$base" \
+  --set "Linear solver/Out-of-core directory=$work" --set "Linear solver/Direct solver=KLU"
 # Non-finite numbers, a truncated file, binary garbage as input.
 expect inf_stroke "Tools/Punch/Stroke" "$base" --set "Tools/Punch/Stroke=inf"
 expect nan_friction "Friction coefficient" "$base" --set "Tools/Die/Friction coefficient=nan"

@@ -4,6 +4,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <string>
+
 namespace formsolve
 {
   namespace parameters
@@ -132,6 +134,8 @@ namespace formsolve
       double low_rank_tolerance = 0;
       /// GMRES iterations allowed with the low-rank factors.
       unsigned int low_rank_iterations = 20;
+      /// MUMPS out-of-core factors in this directory; empty: in memory.
+      std::string out_of_core_directory;
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);

@@ -50,6 +50,12 @@ namespace formsolve
       unsigned long matrix_assemblies() const { return n_matrix_assemblies; }
       /// Numeric factorisations of the direct solver since the start.
       unsigned long factorisations() const { return n_factorisations; }
+      /// Frees the linear solver's factors (LinearSolver::release_factors).
+      void release_factors()
+      {
+        if (linear_solver)
+          linear_solver->release_factors();
+      }
       /// Memory of the last MUMPS factorisation, all ranks (MB; 0 if none).
       double factorisation_memory_mb() const
       {

@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace formsolve
@@ -38,6 +39,10 @@ namespace formsolve
         /// dropping tolerance (CNTL(7)); 0: full rank. The factors are then
         /// approximate: solve with them as a preconditioner.
         double low_rank_tolerance = 0;
+        /// Out-of-core factors (MUMPS ICNTL(22) = 1): written to files in
+        /// this directory by the factorisation and read back by every
+        /// solve; empty: held in memory.
+        std::string out_of_core_directory;
       };
 
       MumpsDirect(const MPI_Comm comm, const Settings &settings);

@@ -52,6 +52,8 @@ namespace formsolve
 
       /// After the mesh changed.
       void reinit() { system.reinit(); }
+      /// Between steps, before a phase that needs memory of its own.
+      void release_factors() { system.release_factors(); }
 
       /// Solves the next step, at most @p max_dt long. On success the
       /// state's velocity, contact state and holder velocity are those of
