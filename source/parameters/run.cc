@@ -6,6 +6,8 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <string>
+#include <utility>
 
 namespace formsolve
 {
@@ -89,6 +91,33 @@ namespace formsolve
           }
         return coarse * std::ldexp(1., 2 * m.refinements) * m.layers;
       }
+
+      /// Peak memory per DoF of a run with this linear solver (bytes) and
+      /// the setting it stands for: above the largest measured at 0.19-1.04M
+      /// DoFs (doc/performance.md, "Memory of a run").
+      std::pair<double, std::string> memory_per_dof(const Run &run)
+      {
+        const LinearSolver &l = run.linear;
+        if (l.type != LinearSolverType::direct ||
+            l.direct_solver != DirectSolver::mumps)
+          return {20e3, "Amesos or the iterative solver's direct fallback"};
+        bool symmetric = run.nonlinear.symmetrise_friction;
+        if (!symmetric)
+          {
+            symmetric = true;
+            for (const Tool *t :
+                 {&run.tools.punch, &run.tools.die, &run.tools.blank_holder})
+              symmetric &= !t->enabled || t->friction_coefficient == 0;
+          }
+        const bool ldlt = l.symmetric_factorisation &&
+                          (symmetric || l.unsymmetric_factors ==
+                                          UnsymmetricFactors::symmetric_part);
+        if (!l.out_of_core_directory.empty())
+          return {8e3, "MUMPS, factors out of core"};
+        if (ldlt)
+          return {13e3, "MUMPS LDL^T in core"};
+        return {19e3, "MUMPS LU in core"};
+      }
     } // namespace
 
     void Run::validate() const
@@ -157,22 +186,23 @@ namespace formsolve
                     str(2 * die_half[a]) +
                     " mm): it would press the sheet into the die");
 
-      // Refuse meshes the machine cannot hold, before building them: about
-      // 20 kB per DoF with the direct solver (doc/performance.md).
+      // Refuse meshes the machine cannot hold, before building them.
       const double cells = initial_cells(geometry, mesh);
       if (cells > 0)
         {
           const double dim = model::space_dimension(geometry.model);
           const double dofs =
             dim * cells * std::pow(mesh.degree, dim) * (1 + 1. / mesh.layers);
-          const double needed = 20e3 * dofs, available = available_memory();
+          const auto [per_dof, setting] = memory_per_dof(*this);
+          const double needed = per_dof * dofs, available = available_memory();
           std::ostringstream what;
           what << "gives about " << cells << " cells and " << dofs
-               << " DoFs, which need about " << needed / 1e9
-               << " GB (20 kB per DoF), more than 80 % of the "
-               << available / 1e9
+               << " DoFs, which need about " << needed / 1e9 << " GB ("
+               << per_dof / 1e3 << " kB per DoF with " << setting
+               << "), more than 80 % of the " << available / 1e9
                << " GB available; lower Mesh/Planform refinements or "
-                  "Mesh/Layers through thickness";
+                  "Mesh/Layers through thickness, or set Linear "
+                  "solver/Out-of-core directory";
           require(available == 0 || needed < 0.8 * available,
                   "Mesh/Planform refinements",
                   what.str());
