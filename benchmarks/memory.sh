@@ -3,11 +3,11 @@
 # symmetric part (Unsymmetric tangent = symmetric part), and both with the
 # factors out of core (Linear solver/Out-of-core directory). The quarter 3-D
 # cup (fixed penalty, no adaptive refinement), the first step (0.25 mm),
-# planform levels 5 and 6 with 4 layers on 1 rank, and level 7 with 6 layers
-# (1.03M DoFs) on 2 ranks, out of core. Per run: peak resident memory of all
-# ranks and of the largest, MUMPS's own memory (INFOG(22)), the factor size,
-# and the time per Newton iteration split into factorisation and
-# substitution. Writes doc/memory.csv and prints its table.
+# planform levels 5 and 6 with 4 layers on 1 rank, level 6 on 2 ranks, and
+# level 7 with 6 layers (1.04M DoFs) on 2 ranks, out of core. Per run: peak
+# resident memory of all ranks and of the largest, MUMPS's own memory
+# (INFOG(22)), the factor size, and the time per Newton iteration split into
+# factorisation and substitution. Writes doc/memory.csv and prints its table.
 # Usage: bash benchmarks/memory.sh [--force] [--no-1m]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -49,6 +49,10 @@ for level in 5 6; do
   run "l$level-lu-ooc" 1 "$level" 4 "$disk"
   run "l$level-sym-ooc" 1 "$level" 4 "$sym" "$disk"
 done
+# 2 ranks: the transposes on the other rank, MUMPS's distributed fronts.
+run l6-lu-2ranks 2 6 4
+run l6-sym-2ranks 2 6 4 "$sym"
+run l6-sym-ooc-2ranks 2 6 4 "$sym" "$disk"
 if [ "$ONE_M" = 1 ]; then
   run l7x6-sym-ooc-2ranks 2 7 6 "$sym" "$disk"
 fi

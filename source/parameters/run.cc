@@ -113,9 +113,9 @@ namespace formsolve
                           (symmetric || l.unsymmetric_factors ==
                                           UnsymmetricFactors::symmetric_part);
         if (!l.out_of_core_directory.empty())
-          return {8e3, "MUMPS, factors out of core"};
+          return {9e3, "MUMPS, factors out of core"};
         if (ldlt)
-          return {13e3, "MUMPS LDL^T in core"};
+          return {15e3, "MUMPS LDL^T in core"};
         return {19e3, "MUMPS LU in core"};
       }
     } // namespace
