@@ -72,14 +72,14 @@ namespace formsolve
         null_space = std::move(space);
       }
 
-      /// Memory of the last MUMPS factorisation on all ranks (MB); 0 for the
-      /// Amesos solvers.
       /// Frees the factors before a phase that needs memory of its own
       /// (checkpoint, output, remeshing). MUMPS 5.5 cannot free the factors
-      /// and keep the analysis (JOB = -4 came later): the next solve
+      /// and keep the analysis (it refuses JOB = -4): the next solve
       /// analyses again.
       void release_factors();
 
+      /// Memory of the last MUMPS factorisation on all ranks (MB); 0 for the
+      /// Amesos solvers.
       double factorisation_memory_mb() const;
       /// Entries of the last MUMPS factors (LDL^T: one triangle); 0 for the
       /// Amesos solvers.
