@@ -5,19 +5,23 @@
 # adaptive-strict (delta = 1e-3 mm); writes doc/convergence.csv,
 # doc/convergence-histogram.png and the tables for doc/convergence.md.
 # Usage: [REPORT_TAGS="before ..."] bash benchmarks/convergence.sh [--force] [--exe PATH --tag NAME]
+#          [--set "Section/Entry=value"]...
 #   runs are kept in results/convergence/<tag>/ and reused unless --force;
-#   --exe/--tag run another build (e.g. an older commit's) under its own tag.
+#   --exe/--tag run another build (e.g. an older commit's) under its own tag;
+#   --set passes an entry to every run (an A/B on one parameter, own tag).
 # 3-D runs use RANKS (default 1) MPI ranks.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=$root/build/formsolve
 tag=current
 FORCE=0
+extra=()
 while [ $# -gt 0 ]; do
   case $1 in
     --force) FORCE=1 ;;
     --exe) exe=$(realpath "$2"); shift ;;
     --tag) tag=$2; shift ;;
+    --set) extra+=(--set "$2"); shift ;;
     *) echo "unknown option $1"; exit 1 ;;
   esac
   shift
@@ -34,7 +38,7 @@ run() { # name ranks prm sets...
   if [ "$FORCE" = 1 ] || [ ! -f "$out/$name/run-summary.txt" ]; then
     echo "== $tag/$name ($n rank(s))"
     rm -rf "$out/$name"
-    (cd "$root/prm" && mpirun -np "$n" "$exe" "$prm" "$@" --set "Output/Output interval=0" \
+    (cd "$root/prm" && mpirun -np "$n" "$exe" "$prm" "$@" ${extra[@]+"${extra[@]}"} --set "Output/Output interval=0" \
       --set "Output/Revolved copy=false" --set "Output/Output directory=$out/$name") \
       > "$out/$name.log" 2>&1 || { tail -3 "$out/$name.log"; exit 1; }
   fi

@@ -96,6 +96,16 @@ namespace formsolve
         "adaptive-strict and augmented-lagrangian: re-solves of "
         "one step at most; a step still deeper than allowed "
         "after them is kept and reported in history.csv.");
+      prm.declare_entry(
+        "Strict check residual",
+        "0.1",
+        Double(0, 1),
+        "adaptive-strict: within each solve, once |r|/|f| falls below "
+        "this with the contact set unchanged, the nodes deeper than "
+        "allowed get their factors corrected there and the solve goes "
+        "on; this counts as one of the Max strict passes and saves the "
+        "re-solve after convergence (-). 0: check only after "
+        "convergence.");
       prm.declare_entry("Friction regularisation velocity",
                         "1e-3",
                         Double(),
@@ -127,6 +137,7 @@ namespace formsolve
       target_fraction     = prm.get_double("Target fraction");
       max_status_flips    = prm.get_integer("Max status flips");
       max_strict_passes   = prm.get_integer("Max strict passes");
+      strict_check_residual = prm.get_double("Strict check residual");
       regularisation_velocity =
         prm.get_double("Friction regularisation velocity");
       search_distance = prm.get_double("Search distance");

@@ -225,6 +225,20 @@ namespace formsolve
     }
 
     template <int dim>
+    double FormingSystem<dim>::correct_penalty()
+    {
+      if (!strategy.needs_system() ||
+          !strategy.tighten(state.contact_set,
+                            state.tools,
+                            state.contact_state,
+                            state.comm))
+        return -1;
+      // Estimate again with the new scales (not frozen) at this iterate.
+      strategy.begin_solve();
+      return update_penalty();
+    }
+
+    template <int dim>
     unsigned int FormingSystem<dim>::solve(VectorType &dv)
     {
       TimerOutput::Scope t(timer, "linear solve");

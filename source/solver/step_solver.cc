@@ -47,7 +47,14 @@ namespace formsolve
           for (;; ++passes)
             {
               system.begin_solve();
-              const auto r      = newton.solve(system, state.velocity);
+              const auto r = newton.solve(
+                system,
+                state.velocity,
+                passes < prm.contact.max_strict_passes
+                  ? prm.contact.strict_check_residual
+                  : 0.);
+              // A correction within the solve counts as a pass.
+              passes += r.corrected;
               attempt.converged = r.converged;
               attempt.failure   = r.failure;
               attempt.residual  = r.residual;

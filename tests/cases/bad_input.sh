@@ -61,6 +61,7 @@ expect refinement_layers "Mesh refinement/Punch level" "$base" --set "Mesh refin
 expect refinement_no_criterion "Mesh refinement/Interval" "$base" --set "Mesh refinement/Interval=2"
 expect al_no_passes "Contact/Max strict passes" "$base" --set "Contact/Penalty strategy=augmented-lagrangian" \
   --set "Contact/Max strict passes=0"
+expect strict_check_range "Strict check residual" "$base" --set "Contact/Strict check residual=2"
 # Process model (issue 8): model, holder control, step control, end of run.
 expect unknown_model "Model" "$base" --set "Geometry/Model=octant"
 expect axisymmetric_rectangle "Geometry/Blank shape" "$base" --set "Geometry/Model=axisymmetric"

@@ -66,6 +66,16 @@ namespace formsolve
         return false;
       }
 
+      /// Within a solve, near convergence: tighten the factors of the nodes
+      /// deeper than allowed (strict scales; nothing is relaxed). Returns
+      /// true if any changed (same on all ranks).
+      virtual bool tighten(const ContactSet<dim> & /*set*/,
+                           const tools::ToolSet<dim> & /*tools*/,
+                           ContactState & /*state*/,
+                           const MPI_Comm /*comm*/)
+      {
+        return false;
+      }
       /// One line on the last estimate, for the iteration log.
       virtual std::string summary() const { return ""; }
 

@@ -75,6 +75,7 @@ namespace formsolve
       unsigned int solve(VectorType &dv) override;
       bool         contact_set_changed() override;
       double       update_penalty() override;
+      double       correct_penalty() override;
       std::string  iteration_info() const override;
       void         set_step_length(const double alpha) override;
       void         accept_step() override;

@@ -62,6 +62,12 @@ namespace formsolve
       virtual double update_penalty() { return -1; }
       /// Extra text for the iteration log (e.g. the penalty factor range).
       virtual std::string iteration_info() const { return ""; }
+      /// Called once per solve when the iterate is close to convergence
+      /// (Contact/Strict check residual): a penalty strategy with a bound
+      /// (adaptive-strict) corrects the factors of the nodes deeper than
+      /// allowed now, instead of in a re-solve after convergence. Returns the
+      /// new |r|, or -1 if nothing changed.
+      virtual double correct_penalty() { return -1; }
     };
 
     struct NewtonReport
@@ -71,6 +77,7 @@ namespace formsolve
       unsigned int linear_iterations = 0;
       unsigned int picard_iterations = 0;
       double       residual          = 0;
+      bool         corrected         = false; // correct_penalty() changed r
       std::string  failure;
     };
 
@@ -81,8 +88,12 @@ namespace formsolve
                    dealii::ConditionalOStream         log);
 
       /// Iterate from @p v (locally owned entries, constraints satisfied).
+      /// Once |r|/|f| <= @p check_residual (> 0) with the contact set
+      /// unchanged, the system may correct its penalty factors, once per
+      /// solve (NonlinearSystem::correct_penalty()).
       NewtonReport solve(NonlinearSystem             &system,
-                         NonlinearSystem::VectorType &v) const;
+                         NonlinearSystem::VectorType &v,
+                         const double                 check_residual = 0) const;
 
     private:
       parameters::NonlinearSolver        prm;

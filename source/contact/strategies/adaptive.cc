@@ -214,13 +214,12 @@ namespace formsolve
     }
 
     template <int dim>
-    bool AdaptivePenalty<dim>::finish_solve(const ContactSet<dim>     &set,
-                                            const tools::ToolSet<dim> &tools,
-                                            ContactState              &state,
-                                            const MPI_Comm             comm)
+    bool AdaptivePenalty<dim>::check_bound(const ContactSet<dim>     &set,
+                                           const tools::ToolSet<dim> &tools,
+                                           ContactState              &state,
+                                           const MPI_Comm             comm,
+                                           const bool relax) const
     {
-      if (!strict)
-        return false;
       int again = 0;
       for (const auto &pair : set.pairs)
         {
@@ -234,12 +233,30 @@ namespace formsolve
               scale *= 1.1 * depth / delta;
               again = 1;
             }
-          else if (!pair.active || depth < 0.5 * delta)
+          else if (relax && (!pair.active || depth < 0.5 * delta))
             // Far inside the bound (or open): what made the estimate too soft
             // has passed; halve the scale towards 1 at most once per solve.
             scale = std::max(1., scale * std::max(0.5, depth / (0.5 * delta)));
         }
       return Utilities::MPI::max(again, comm) != 0;
+    }
+
+    template <int dim>
+    bool AdaptivePenalty<dim>::finish_solve(const ContactSet<dim>     &set,
+                                            const tools::ToolSet<dim> &tools,
+                                            ContactState              &state,
+                                            const MPI_Comm             comm)
+    {
+      return strict && check_bound(set, tools, state, comm, true);
+    }
+
+    template <int dim>
+    bool AdaptivePenalty<dim>::tighten(const ContactSet<dim>     &set,
+                                       const tools::ToolSet<dim> &tools,
+                                       ContactState              &state,
+                                       const MPI_Comm             comm)
+    {
+      return strict && check_bound(set, tools, state, comm, false);
     }
 
     template <int dim>

@@ -31,6 +31,10 @@ namespace formsolve
                                const tools::ToolSet<dim> &tools,
                                ContactState              &state,
                                const MPI_Comm             comm) override;
+      bool        tighten(const ContactSet<dim>     &set,
+                          const tools::ToolSet<dim> &tools,
+                          ContactState              &state,
+                          const MPI_Comm             comm) override;
       std::string summary() const override;
       std::string name() const override
       {
@@ -43,6 +47,14 @@ namespace formsolve
       unsigned int n_active = 0;
 
     private:
+      /// The strict check: scale up the nodes deeper than delta; with
+      /// @p relax also scale back those well inside it. True if any was
+      /// deeper (on any rank).
+      bool check_bound(const ContactSet<dim>     &set,
+                       const tools::ToolSet<dim> &tools,
+                       ContactState              &state,
+                       const MPI_Comm             comm,
+                       const bool                 relax) const;
       double lower, upper;
       bool   freeze, strict;
       bool   projection; // the published estimate with K_b dv
