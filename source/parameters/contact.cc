@@ -123,20 +123,20 @@ namespace formsolve
     void Contact::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
-      penalty_strategy    = prm.get("Penalty strategy");
-      al_penalty          = prm.get("Augmented Lagrangian penalty");
-      penalty_factor      = prm.get_double("Penalty factor");
-      allowed_penetration = prm.get_double("Allowed penetration");
-      lower_bound         = prm.get_double("Lower bound");
-      upper_bound         = prm.get_double("Upper bound");
-      freeze              = prm.get_bool("Freeze factors");
-      adaptive_estimate   = prm.get("Adaptive estimate") == "projection"
-                              ? AdaptiveEstimate::projection
-                              : AdaptiveEstimate::force;
-      damping             = prm.get_double("Damping");
-      target_fraction     = prm.get_double("Target fraction");
-      max_status_flips    = prm.get_integer("Max status flips");
-      max_strict_passes   = prm.get_integer("Max strict passes");
+      penalty_strategy      = prm.get("Penalty strategy");
+      al_penalty            = prm.get("Augmented Lagrangian penalty");
+      penalty_factor        = prm.get_double("Penalty factor");
+      allowed_penetration   = prm.get_double("Allowed penetration");
+      lower_bound           = prm.get_double("Lower bound");
+      upper_bound           = prm.get_double("Upper bound");
+      freeze                = prm.get_bool("Freeze factors");
+      adaptive_estimate     = prm.get("Adaptive estimate") == "projection"
+                                ? AdaptiveEstimate::projection
+                                : AdaptiveEstimate::force;
+      damping               = prm.get_double("Damping");
+      target_fraction       = prm.get_double("Target fraction");
+      max_status_flips      = prm.get_integer("Max status flips");
+      max_strict_passes     = prm.get_integer("Max strict passes");
       strict_check_residual = prm.get_double("Strict check residual");
       regularisation_velocity =
         prm.get_double("Friction regularisation velocity");

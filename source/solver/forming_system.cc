@@ -227,11 +227,10 @@ namespace formsolve
     template <int dim>
     double FormingSystem<dim>::correct_penalty()
     {
-      if (!strategy.needs_system() ||
-          !strategy.tighten(state.contact_set,
-                            state.tools,
-                            state.contact_state,
-                            state.comm))
+      if (!strategy.needs_system() || !strategy.tighten(state.contact_set,
+                                                        state.tools,
+                                                        state.contact_state,
+                                                        state.comm))
         return -1;
       // Estimate again with the new scales (not frozen) at this iterate.
       strategy.begin_solve();

@@ -47,12 +47,11 @@ namespace formsolve
           for (;; ++passes)
             {
               system.begin_solve();
-              const auto r = newton.solve(
-                system,
-                state.velocity,
-                passes < prm.contact.max_strict_passes
-                  ? prm.contact.strict_check_residual
-                  : 0.);
+              const auto r = newton.solve(system,
+                                          state.velocity,
+                                          passes < prm.contact.max_strict_passes
+                                            ? prm.contact.strict_check_residual
+                                            : 0.);
               // A correction within the solve counts as a pass.
               passes += r.corrected;
               attempt.converged = r.converged;

@@ -33,7 +33,7 @@ namespace formsolve
       double           target_fraction         = 1;
       unsigned int     max_status_flips        = 4;
       unsigned int     max_strict_passes       = 5;
-      double           strict_check_residual   = 0.1; // |r|/|f|; 0: off
+      double           strict_check_residual   = 0.1;  // |r|/|f|; 0: off
       double           regularisation_velocity = 1e-3; // mm/s
       double           search_distance         = 1;    // mm
 

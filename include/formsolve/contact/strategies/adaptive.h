@@ -50,11 +50,11 @@ namespace formsolve
       /// The strict check: scale up the nodes deeper than delta; with
       /// @p relax also scale back those well inside it. True if any was
       /// deeper (on any rank).
-      bool check_bound(const ContactSet<dim>     &set,
-                       const tools::ToolSet<dim> &tools,
-                       ContactState              &state,
-                       const MPI_Comm             comm,
-                       const bool                 relax) const;
+      bool   check_bound(const ContactSet<dim>     &set,
+                         const tools::ToolSet<dim> &tools,
+                         ContactState              &state,
+                         const MPI_Comm             comm,
+                         const bool                 relax) const;
       double lower, upper;
       bool   freeze, strict;
       bool   projection; // the published estimate with K_b dv
