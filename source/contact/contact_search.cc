@@ -142,9 +142,14 @@ namespace formsolve
               pair.relative_velocity = vel - tools[t].velocity();
               pair.predicted_gap =
                 pair.gap + (pair.normal * pair.relative_velocity) * dt;
-              pair.area   = std::max(0., -(pair.normal * node.area_vector));
-              pair.shift  = state.shift(k, t);
-              pair.active = pair.predicted_gap < pair.shift && pair.area > 0;
+              pair.area  = std::max(0., -(pair.normal * node.area_vector));
+              pair.shift = state.shift(k, t);
+              // A node that just touches (predicted gap = shift, zero
+              // force) is active: its stiffness enters the linearisation.
+              // From rest (the first step) the sheet lies on the die and
+              // under the holder at zero gap; without them it floats on the
+              // punch alone and the first Newton step moves it rigidly.
+              pair.active = pair.predicted_gap <= pair.shift && pair.area > 0;
               set.pairs.push_back(pair);
             }
         }

@@ -144,8 +144,10 @@ namespace formsolve
         "Max line search steps",
         "6",
         Integer(0, 30),
-        "Trial step lengths per Newton iteration: regula falsi on the "
-        "directional derivative dv.r(v + alpha dv) of the potential.");
+        "Trial step lengths per Newton iteration after the full step: "
+        "regula falsi on the directional derivative dv.r(v + alpha dv) of "
+        "the potential, then halving of the bracket (doc/theory.md section "
+        "8).");
       prm.declare_entry(
         "Picard iterations",
         "0",
@@ -155,8 +157,9 @@ namespace formsolve
         "Picard fallback",
         "true",
         Bool(),
-        "When the line search fails, do three direct (secant) iterations, "
-        "then return to Newton.");
+        "When the line search fails twice in a row (the second time along "
+        "the exact tangent's direction, doc/theory.md section 8), do three "
+        "direct (secant) iterations, then return to Newton.");
       prm.declare_entry("Log iterations",
                         "false",
                         Bool(),

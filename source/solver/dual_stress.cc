@@ -2,6 +2,7 @@
 
 #include <formsolve/solver/dual_stress.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace formsolve
@@ -20,6 +21,17 @@ namespace formsolve
     {
       for (auto &p : accepted)
         p.valid = false;
+      trials = accepted;
+    }
+
+    void DualStress::restart(const double cutoff)
+    {
+      for (auto &p : accepted)
+        if (p.valid)
+          {
+            const double rate = std::sqrt(2. / 3. * (p.e * p.e));
+            p.w               = p.e / std::max(rate, cutoff);
+          }
       trials = accepted;
     }
 

@@ -109,6 +109,16 @@ namespace formsolve
     }
 
     template <int dim>
+    double FormingSystem<dim>::assemble_exact(const VectorType &v)
+    {
+      dual.restart(assembler.cutoff_rate());
+      exact_tangent  = true;
+      const double r = assemble(v, true);
+      exact_tangent  = false;
+      return r;
+    }
+
+    template <int dim>
     double FormingSystem<dim>::assemble_residual(const VectorType &v)
     {
       return evaluate(v, last_newton, false);
@@ -141,16 +151,17 @@ namespace formsolve
         TimerOutput::Scope t(timer,
                              with_matrix ? "assembly: body, tangent"
                                          : "assembly: body, residual only");
-        f_scale = assembler.assemble_body(state.dof_handler,
-                                          *state.mapping,
-                                          state.constraints,
-                                          state.velocity_ghost,
-                                          state.history,
-                                          dt,
-                                          newton,
-                                          with_matrix ? &matrix : nullptr,
-                                          residual,
-                                          use_dual ? &dual : nullptr);
+        f_scale =
+          assembler.assemble_body(state.dof_handler,
+                                  *state.mapping,
+                                  state.constraints,
+                                  state.velocity_ghost,
+                                  state.history,
+                                  dt,
+                                  newton,
+                                  with_matrix ? &matrix : nullptr,
+                                  residual,
+                                  use_dual && !exact_tangent ? &dual : nullptr);
       }
       // Line-search trials (no matrix) keep the factors of the iterate.
       bool estimate = !strategy.needs_system();

@@ -41,7 +41,7 @@ namespace formsolve
           << std::defaultfloat << system.iteration_info() << std::endl;
       NonlinearSystem::VectorType dv(v), trial(v);
       // The last correction, for the contraction estimate.
-      bool   last_full = false;
+      bool   last_full = false, last_stalled = false;
       double last_step = 0, last_xstep = 0;
 
       for (unsigned int it = 1; it <= prm.max_iterations; ++it)
@@ -80,18 +80,22 @@ namespace formsolve
             }
 
           // Line search on the directional derivative g(alpha) = dv . r(v +
-          // alpha dv) of the (for frictionless contact convex) potential:
-          // accept a trial with a smaller merit |(r, extra residual)| whose
-          // |g| has dropped enough or that still descends (g < 0); regula
-          // falsi towards g = 0 where g turned positive; halve the step where
-          // g < 0 but the merit grew. The
-          // full step assembles the matrix with the residual (it serves the
-          // next iteration when accepted); shorter trials the residual only,
-          // and the accepted one its matrix afterwards.
+          // alpha dv) of the (for frictionless contact convex) potential
+          // (doc/theory.md section 8): accept a trial with a smaller merit
+          // |(r, extra residual)| whose |g| has dropped to half. A trial that
+          // still descends (g < 0, smaller merit) is too short: it becomes
+          // the lower end of a bracket, which is then halved. Above any such
+          // trial, regula falsi towards g = 0 where g turned positive, and
+          // halving where g < 0 but the merit grew. When the trials run out,
+          // the longest descending one is taken. The full step assembles the
+          // matrix with the residual (it serves the next iteration when
+          // accepted); shorter trials the residual only, and the accepted one
+          // its matrix afterwards.
           const bool next_newton = fallback == 0 && it >= prm.picard_iterations;
           bool       stalled = false, with_matrix = true;
           const double g0    = system.directional_derivative(dv);
           double       alpha = 1, r_trial = 0, m_trial = 0;
+          double       a_lo = 0, a_hi = 1, g_hi = 0;
           for (unsigned int ls = 0;; ++ls)
             {
               trial = v;
@@ -102,21 +106,38 @@ namespace formsolve
                                            : system.assemble_residual(trial);
               m_trial        = merit(r_trial);
               const double g = system.directional_derivative(dv);
+              const bool   descends = m_trial < m && g < 0;
               if (!(g0 < 0) ||
-                  (m_trial < m && (g < 0 || std::abs(g) <= 0.5 * std::abs(g0))))
+                  (m_trial < m && std::abs(g) <= 0.5 * std::abs(g0)) ||
+                  (descends && alpha == 1))
                 break;
+              if (descends)
+                a_lo = alpha;
+              else
+                {
+                  a_hi = alpha;
+                  g_hi = g;
+                }
               if (ls >= prm.max_line_search_steps)
                 {
-                  stalled = true;
+                  stalled = a_lo == 0;
+                  if (!stalled && alpha != a_lo)
+                    {
+                      alpha = a_lo;
+                      trial = v;
+                      trial.add(alpha, dv);
+                      system.set_step_length(alpha);
+                      with_matrix = false; // assembled below
+                    }
                   break;
                 }
-              if (g > 0 && std::abs(g) > 0.5 * std::abs(g0))
-                {
-                  const double a_new = alpha * g0 / (g0 - g);
-                  alpha = std::clamp(a_new, 0.1 * alpha, 0.9 * alpha);
-                }
+              if (a_lo > 0)
+                alpha = 0.5 * (a_lo + a_hi);
+              else if (g_hi > 0 && std::abs(g_hi) > 0.5 * std::abs(g0))
+                alpha =
+                  std::clamp(a_hi * g0 / (g0 - g_hi), 0.1 * a_hi, 0.9 * a_hi);
               else
-                alpha *= 0.5;
+                alpha = 0.5 * a_hi;
             }
           if (!std::isfinite(r_trial))
             {
@@ -125,10 +146,23 @@ namespace formsolve
             }
           if (fallback > 0)
             --fallback;
-          if (stalled && next_newton && prm.picard_fallback)
+          // No trial lowered the merit: the direction does not descend |r|
+          // (the stress-velocity tangent is not the derivative of r). Stay at
+          // v and take the next direction from the exact tangent, whose
+          // direction does, where r is smooth. If that stalls too: a few
+          // direct (secant) iterations from the shortest trial, then Newton
+          // again.
+          const bool retry = stalled && !last_stalled;
+          last_stalled     = stalled;
+          if (retry)
             {
-              // Newton stalls: a few direct (secant) iterations, then Newton
-              // again.
+              alpha = 0;
+              trial = v;
+              system.set_step_length(0);
+              r_trial = system.assemble_exact(trial);
+            }
+          else if (stalled && next_newton && prm.picard_fallback)
+            {
               fallback = 3;
               r_trial  = system.assemble(trial, false);
             }
@@ -169,7 +203,8 @@ namespace formsolve
               << "  |r|/|f|=" << std::scientific << std::setprecision(2)
               << report.residual << "  |dv|/|v|=" << dv_rel
               << "  alpha=" << alpha << "  linear=" << linear_its
-              << (changed ? "  contact set changed" : "") << std::defaultfloat
+              << (changed ? "  contact set changed" : "")
+              << (retry ? "  stalled: exact tangent" : "") << std::defaultfloat
               << system.iteration_info() << std::endl;
           // Near convergence, with the contact set settled: the strategy's
           // bound is checked here once; a correction changes the equations,
@@ -188,7 +223,7 @@ namespace formsolve
                     << report.residual << std::defaultfloat << std::endl;
                 continue;
               }
-          if (report.residual <= prm.residual_tolerance &&
+          if (!retry && report.residual <= prm.residual_tolerance &&
               left * dv_rel <= prm.correction_tolerance && !changed &&
               system.extra_residual() <= prm.residual_tolerance &&
               left * xstep <= prm.correction_tolerance)

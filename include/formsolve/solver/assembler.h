@@ -67,6 +67,9 @@ namespace formsolve
                            VectorType                              &residual,
                            DualStress *dual = nullptr) const;
 
+      /// The strain rate below which the flow law is linear (1/s).
+      double cutoff_rate() const { return material.cutoff_rate(); }
+
       /// After convergence: integrate strain, thickness strain and damage,
       /// store stresses.
       void update_history(const dealii::DoFHandler<dim> &dof_handler,

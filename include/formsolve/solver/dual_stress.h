@@ -42,6 +42,11 @@ namespace formsolve
 
       /// The last trial values become the linearisation point.
       void accept() { accepted = trials; }
+      /// Forget the trials (a line search that is abandoned) and set every
+      /// dual direction to its value at the accepted strain rate, e/rate
+      /// (e/@p cutoff in rigid zones): the next tangent linearises about the
+      /// accepted iterate itself.
+      void restart(const double cutoff);
 
     private:
       struct PointState

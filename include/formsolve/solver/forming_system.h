@@ -79,8 +79,10 @@ namespace formsolve
       std::string  iteration_info() const override;
       void         set_step_length(const double alpha) override;
       void         accept_step() override;
-      /// Forget the linearisation point of the stress-velocity tangent (a
-      /// rejected step).
+      /// The tangent of eq. 4 (doc/theory.md) at the accepted iterate, the
+      /// trials of the stress-velocity tangent forgotten (a rejected line
+      /// search).
+      double assemble_exact(const VectorType &v) override;
       double extra_residual() const override;
       double extra_residual_norm() const override;
       double extra_correction() const override;
@@ -114,6 +116,7 @@ namespace formsolve
       std::unique_ptr<LinearSolver> linear_solver;
       DualStress                    dual;
       const bool                    use_dual;
+      bool                          exact_tangent = false; // assemble_exact()
       HolderCoupling<dim>           holder;
       double w_accepted = 0, w_trial = 0, dw = 0; // holder velocity (mm/s)
 

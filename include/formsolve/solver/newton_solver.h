@@ -29,6 +29,14 @@ namespace formsolve
       {
         return assemble(v, true);
       }
+      /// As assemble(v, true), with the exact derivative of the residual as
+      /// the tangent where the system otherwise uses another linearisation
+      /// (the stress-velocity tangent). Its direction descends |r|: the
+      /// retry after a line search that found no smaller merit.
+      virtual double assemble_exact(const VectorType &v)
+      {
+        return assemble(v, true);
+      }
       /// A force scale for |r| from the last assembly (internal forces).
       virtual double force_scale() const = 0;
       /// Directional derivative of the potential along the last Newton
