@@ -6,19 +6,8 @@
 # penetrations below delta); the in-solve check must actually correct.
 # Usage: check_strict_in_solve.sh FORMSOLVE PRM OUTDIR [--set "..."]...
 set -uo pipefail
-exe=$1 prm=$2 out=$3
-shift 3
-common=("$@")
-rm -rf "$out"; mkdir -p "$out"
-cd "$(dirname "$prm")"
-run() { # name sets...
-  local name=$1; shift
-  "$exe" "$prm" --set "Output/Output directory=$out/$name" --set "Output/Report=false" \
-    --set "Contact/Penalty strategy=adaptive-strict" --set "Nonlinear solver/Log iterations=true" \
-    "${common[@]}" "$@" > "$out/$name.log" 2>&1 ||
-    { echo "FAIL: run $name failed"; tail -5 "$out/$name.log"; exit 1; }
-  grep '^done' "$out/$name.log"
-}
+. "$(dirname "$0")/ab_runs.sh" "$@"
+common+=(--set "Contact/Penalty strategy=adaptive-strict" --set "Nonlinear solver/Log iterations=true")
 run after --set "Contact/Strict check residual=0"
 run within --set "Contact/Strict check residual=0.1"
 corrected=$(grep -c "strict check: factors corrected" "$out/within.log")

@@ -5,18 +5,8 @@
 # raised after the last allowed pass and the following steps differed.
 # Usage: check_strict_last_pass.sh FORMSOLVE PRM OUTDIR [--set "..."]...
 set -uo pipefail
-exe=$1 prm=$2 out=$3
-shift 3
-common=("$@")
-rm -rf "$out"; mkdir -p "$out"
-cd "$(dirname "$prm")"
-run() { # name sets...
-  local name=$1; shift
-  "$exe" "$prm" --set "Output/Output directory=$out/$name" --set "Output/Report=false" \
-    --set "Output/Wall time in history=false" "${common[@]}" "$@" > "$out/$name.log" 2>&1 ||
-    { echo "FAIL: run $name failed"; tail -5 "$out/$name.log"; exit 1; }
-  grep '^done' "$out/$name.log"
-}
+. "$(dirname "$0")/ab_runs.sh" "$@"
+common+=(--set "Output/Wall time in history=false")
 run adaptive --set "Contact/Penalty strategy=adaptive"
 run strict0 --set "Contact/Penalty strategy=adaptive-strict" --set "Contact/Max strict passes=0"
 run strict --set "Contact/Penalty strategy=adaptive-strict"
