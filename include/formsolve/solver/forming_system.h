@@ -117,7 +117,8 @@ namespace formsolve
       DualStress                    dual;
       const bool                    use_dual;
       bool                          exact_tangent = false; // assemble_exact()
-      HolderCoupling<dim>           holder;
+      bool hold_holder = false; // dw = 0 in the first correction of a step
+      HolderCoupling<dim> holder;
       double w_accepted = 0, w_trial = 0, dw = 0; // holder velocity (mm/s)
 
       double        dt              = 0;
