@@ -101,17 +101,10 @@ namespace formsolve
         if (l.type != LinearSolverType::direct ||
             l.direct_solver != DirectSolver::mumps)
           return {20e3, "Amesos or the iterative solver's direct fallback"};
-        bool symmetric = run.nonlinear.symmetrise_friction;
-        if (!symmetric)
-          {
-            symmetric = true;
-            for (const Tool *t :
-                 {&run.tools.punch, &run.tools.die, &run.tools.blank_holder})
-              symmetric &= !t->enabled || t->friction_coefficient == 0;
-          }
-        const bool ldlt = l.symmetric_factorisation &&
-                          (symmetric || l.unsymmetric_factors ==
-                                          UnsymmetricFactors::symmetric_part);
+        const bool ldlt =
+          l.symmetric_factorisation &&
+          (run.symmetric_tangent() ||
+           l.unsymmetric_factors == UnsymmetricFactors::symmetric_part);
         if (!l.out_of_core_directory.empty())
           return {9e3, "MUMPS, factors out of core"};
         if (ldlt)
@@ -119,6 +112,16 @@ namespace formsolve
         return {19e3, "MUMPS LU in core"};
       }
     } // namespace
+
+    bool Run::symmetric_tangent() const
+    {
+      if (nonlinear.symmetrise_friction)
+        return true;
+      for (const Tool *t : {&tools.punch, &tools.die, &tools.blank_holder})
+        if (t->enabled && t->friction_coefficient != 0)
+          return false;
+      return true;
+    }
 
     void Run::validate() const
     {

@@ -66,17 +66,9 @@ namespace formsolve
       DoFTools::extract_constant_modes(state.dof_handler,
                                        ComponentMask(dim, true),
                                        modes);
-      // Symmetric tangent: frictionless tools, or the friction stiffness
-      // symmetrised.
-      bool symmetric = prm.nonlinear.symmetrise_friction;
-      if (!symmetric)
-        {
-          symmetric = true;
-          for (unsigned int i = 0; i < state.tools.size(); ++i)
-            symmetric = symmetric && state.tools.friction_coefficient(i) == 0;
-        }
-      linear_solver =
-        std::make_unique<LinearSolver>(prm.linear, modes, symmetric);
+      linear_solver = std::make_unique<LinearSolver>(prm.linear,
+                                                     modes,
+                                                     prm.symmetric_tangent());
       linear_solver->time_phases(timer);
     }
 

@@ -31,6 +31,9 @@ namespace formsolve
       void        parse(ParameterHandler &prm);
       /// Cross-subsection checks; throws with a message naming the entries.
       void validate() const;
+      /// Whether the Newton tangent is symmetric: every enabled tool is
+      /// frictionless, or the friction tangent is symmetrised.
+      bool symmetric_tangent() const;
     };
   } // namespace parameters
 } // namespace formsolve
