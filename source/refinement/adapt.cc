@@ -15,7 +15,8 @@ namespace formsolve
     template <int dim>
     AdaptReport adapt_mesh(simulation::State<dim>        &state,
                            const RefinementCriteria<dim> &criteria,
-                           const solver::Assembler<dim>  &assembler)
+                           const solver::Assembler<dim>  &assembler,
+                           const std::function<void()>   &before_change)
     {
       state.velocity_ghost = state.velocity;
       const auto flags     = criteria.mark(state.dof_handler,
@@ -24,7 +25,7 @@ namespace formsolve
                                        state.tools);
       if (flags.refine + flags.coarsen == 0)
         return AdaptReport();
-      AdaptReport report = adapt_flagged(state, assembler);
+      AdaptReport report = adapt_flagged(state, assembler, before_change);
       report.refine      = flags.refine;
       report.coarsen     = flags.coarsen;
       return report;
@@ -32,7 +33,8 @@ namespace formsolve
 
     template <int dim>
     AdaptReport adapt_flagged(simulation::State<dim>       &state,
-                              const solver::Assembler<dim> &assembler)
+                              const solver::Assembler<dim> &assembler,
+                              const std::function<void()>  &before_change)
     {
       AdaptReport report;
       auto       &tria = state.tria;
@@ -46,6 +48,8 @@ namespace formsolve
           ++left;
       if (Utilities::MPI::sum(left, state.comm) == 0)
         return report;
+      if (before_change)
+        before_change();
 
       report.volume_before =
         assembler.volume(state.dof_handler, *state.mapping);
@@ -102,12 +106,14 @@ namespace formsolve
       return report;
     }
 
-#define INSTANTIATE(dim)                                           \
-  template AdaptReport adapt_mesh(simulation::State<dim> &,        \
-                                  const RefinementCriteria<dim> &, \
-                                  const solver::Assembler<dim> &); \
-  template AdaptReport adapt_flagged(simulation::State<dim> &,     \
-                                     const solver::Assembler<dim> &);
+#define INSTANTIATE(dim)                                             \
+  template AdaptReport adapt_mesh(simulation::State<dim> &,          \
+                                  const RefinementCriteria<dim> &,   \
+                                  const solver::Assembler<dim> &,    \
+                                  const std::function<void()> &);    \
+  template AdaptReport adapt_flagged(simulation::State<dim> &,       \
+                                     const solver::Assembler<dim> &, \
+                                     const std::function<void()> &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace refinement

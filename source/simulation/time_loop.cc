@@ -117,9 +117,12 @@ namespace formsolve
     bool TimeLoop<dim>::adapt()
     {
       TimerOutput::Scope t(timer, "mesh refinement");
-      // The transfer needs memory; the factors would be dropped anyway.
-      step_solver.release_factors();
-      const auto r = refinement::adapt_mesh(state, criteria, assembler);
+      // The transfer needs memory, and a new mesh drops the factors anyway:
+      // free them then, and keep them (and their analysis) otherwise.
+      const auto r =
+        refinement::adapt_mesh(state, criteria, assembler, [this]() {
+          step_solver.release_factors();
+        });
       if (!r.changed)
         return false;
       step_solver.reinit();

@@ -157,6 +157,14 @@ namespace
       }
     const auto original = gather(state);
 
+    // No flags: the mesh stays, and the caller's hook (TimeLoop frees the
+    // factors there) must not run.
+    unsigned int hooks = 0;
+    const auto   hook  = [&hooks]() { ++hooks; };
+    auto         r     = refinement::adapt_flagged(state, assembler, hook);
+    test::close(name + ": no flags, mesh unchanged", r.changed, 0, 0);
+    test::close(name + ": no flags, no hook", hooks, 0, 0);
+
     // Refine the half of the blank nearer the axis (or corner).
     double extent = 0;
     for (const auto &cell : state.tria.active_cell_iterators())
@@ -165,9 +173,10 @@ namespace
     for (const auto &cell : state.tria.active_cell_iterators())
       if (cell->is_locally_owned() && cell->center()[0] < 0.5 * extent)
         cell->set_refine_flag();
-    auto r = refinement::adapt_flagged(state, assembler);
+    r = refinement::adapt_flagged(state, assembler, hook);
     AssertThrow(r.changed && r.cells_after > r.cells_before,
                 ExcInternalError());
+    test::close(name + ": refined, the hook ran once", hooks, 1, 0);
     report(name + ", refined", compare(state, original), true);
 
     // And back: the mesh, and every record, as at the start.

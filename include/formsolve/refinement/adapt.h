@@ -7,6 +7,8 @@
 #include <formsolve/simulation/state.h>
 #include <formsolve/solver/assembler.h>
 
+#include <functional>
+
 namespace formsolve
 {
   namespace refinement
@@ -24,15 +26,20 @@ namespace formsolve
 
     /// Refine and coarsen @p state's mesh by @p criteria, carrying the
     /// state over, contact state included (doc/theory.md, section 7a).
+    /// @p before_change runs once it is known that the mesh changes, before
+    /// the transfer (the caller frees what the new mesh makes useless, e.g.
+    /// the factors, whose memory the transfer may need); not otherwise.
     template <int dim>
     AdaptReport adapt_mesh(simulation::State<dim>        &state,
                            const RefinementCriteria<dim> &criteria,
-                           const solver::Assembler<dim>  &assembler);
+                           const solver::Assembler<dim>  &assembler,
+                           const std::function<void()>   &before_change = {});
 
     /// The same for the refinement and coarsening flags already set on
     /// @p state's triangulation (locally owned cells), whoever set them.
     template <int dim>
     AdaptReport adapt_flagged(simulation::State<dim>       &state,
-                              const solver::Assembler<dim> &assembler);
+                              const solver::Assembler<dim> &assembler,
+                              const std::function<void()>  &before_change = {});
   } // namespace refinement
 } // namespace formsolve
