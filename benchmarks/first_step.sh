@@ -35,7 +35,7 @@ run() { # model planform layers strategy setting sets...
     --set "Output/Output directory=$tmp/run")
   [ "$strategy" = fixed ] && sets+=(--set "Contact/Penalty factor=1e5")
   rm -rf "$tmp/run"
-  # Two steps of the default time step (one of 0.5 s); step 1 is read.
+  # 0.5 mm of stroke (one step at 0.5 s, more at shorter ones); step 1 is read.
   (cd "$root/prm" && "$exe" cup-drawing.prm "${sets[@]}" --set "Tools/Punch/Stroke=0.5" "$@") \
     > "$tmp/log" 2>&1 || { tail -3 "$tmp/log"; exit 1; }
   /usr/bin/python3 - "$tmp/run/history.csv" "$model,$pf,$layers,$strategy,$setting" >> "$csv" <<'EOF'
