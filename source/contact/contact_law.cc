@@ -20,17 +20,12 @@ namespace formsolve
     {
       NodalContactForce<dim> out;
       out.normal_force = 0;
-      if (!pair.active && !pair.locked)
-        return out;
-      const Tensor<1, dim> &n = pair.normal;
-      // A locked pair keeps the penalty stiffness in the tangent while it is
-      // open, but carries no force: the equations stay those of the contact
-      // law, only the Newton matrix is held fixed (chatter guard).
-      out.stiffness = epsilon * dt * outer_product(n, n);
       if (!pair.active)
         return out;
-      out.normal_force = epsilon * (pair.shift - pair.predicted_gap);
-      out.force        = out.normal_force * n;
+      const Tensor<1, dim> &n = pair.normal;
+      out.stiffness           = epsilon * dt * outer_product(n, n);
+      out.normal_force        = epsilon * (pair.shift - pair.predicted_gap);
+      out.force               = out.normal_force * n;
       if (mu == 0)
         return out;
 

@@ -43,9 +43,10 @@ namespace formsolve
       /// After each contact search: records the status of every pair of
       /// @p set and counts its changes within the solve. A pair that has
       /// changed @p max_flips times is locked for the rest of the solve
-      /// (ContactPair::locked: its change no longer counts, its stiffness
-      /// stays in the tangent, its force still follows the law). Pair
-      /// indices change between steps, records do not.
+      /// (ContactPair::locked: its changes no longer count as changes of the
+      /// contact set in the convergence test; its force and stiffness still
+      /// follow the law, so an open locked pair adds nothing). Pair indices
+      /// change between steps, records do not.
       template <int dim>
       void track_status(ContactSet<dim> &set, const unsigned int max_flips);
 
