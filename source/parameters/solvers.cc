@@ -141,6 +141,18 @@ namespace formsolve
         "where theta <= 1/2 (Deuflhard's estimate; |dv| elsewhere). It saves "
         "the last iteration of a quadratically converging solve.");
       prm.declare_entry(
+        "Predictor",
+        "keep contact",
+        Selection("previous velocity|keep contact"),
+        "The first iterate of a step. previous velocity: the previous step's "
+        "velocity. keep contact: the same, except at the nodes that were in "
+        "contact at the end of the previous step and that this velocity "
+        "would lift off their tool (sliding over a tool radius, or under a "
+        "moving holder): their normal velocity is corrected so that they "
+        "just touch the tool at the end of the step (predicted gap 0, zero "
+        "force), so that the first Newton direction keeps them on it "
+        "(doc/theory.md section 8).");
+      prm.declare_entry(
         "Max line search steps",
         "6",
         Integer(0, 30),
@@ -180,6 +192,9 @@ namespace formsolve
       correction_measure    = prm.get("Correction measure") == "contraction"
                                 ? CorrectionMeasure::contraction
                                 : CorrectionMeasure::last;
+      predictor             = prm.get("Predictor") == "keep contact"
+                                ? Predictor::keep_contact
+                                : Predictor::previous_velocity;
       max_line_search_steps = prm.get_integer("Max line search steps");
       picard_iterations     = prm.get_integer("Picard iterations");
       picard_fallback       = prm.get_bool("Picard fallback");

@@ -4,6 +4,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <formsolve/contact/contact_assembly.h>
+#include <formsolve/contact/contact_predictor.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/solver/forming_system.h>
 #include <formsolve/solver/null_space.h>
@@ -92,6 +93,33 @@ namespace formsolve
       strategy.begin_solve();
       w_accepted = w_trial = state.holder.velocity;
       dw                   = 0;
+    }
+
+    template <int dim>
+    void FormingSystem<dim>::predict(VectorType &v)
+    {
+      if (prm.nonlinear.predictor != parameters::Predictor::keep_contact)
+        return;
+      TimerOutput::Scope t(timer, "contact");
+      state.velocity_ghost = v;
+      if (holder_controlled())
+        state.tools.set_axial_velocity(state.tools.holder_index(),
+                                       state.holder.velocity);
+      search.evaluate(state.tools,
+                      state.displacement_ghost,
+                      state.velocity_ghost,
+                      dt,
+                      state.contact_state,
+                      state.contact_set);
+      VectorType change(state.owned, state.comm);
+      contact::keep_contact(state.contact_set,
+                            state.contact_state,
+                            state.tools,
+                            dt,
+                            change);
+      change.compress(VectorOperation::add);
+      v += change;
+      state.constraints.distribute(v);
     }
 
     template <int dim>

@@ -40,8 +40,10 @@ namespace formsolve
           const double dt = std::min(control.time_step(), max_dt);
           const simulation::StepSnapshot start = state.snapshot();
           system.begin_step(dt);
-          // The previous step's velocity is the predictor.
+          // The previous step's velocity is the predictor, corrected where
+          // it lifts nodes in contact off their tools.
           state.constraints.distribute(state.velocity);
+          system.predict(state.velocity);
           NewtonReport attempt;
           unsigned int passes = 0;
           for (;; ++passes)

@@ -48,6 +48,13 @@ namespace formsolve
       contraction // the error it leaves, from the contraction of full steps
     };
 
+    /// The first iterate of a step.
+    enum class Predictor
+    {
+      previous_velocity, // the previous step's velocity
+      keep_contact       // the same, with nodes in contact kept on their tool
+    };
+
     struct NonlinearSolver
     {
       Tangent tangent = Tangent::stress_velocity;
@@ -58,6 +65,7 @@ namespace formsolve
       double            residual_tolerance    = 1e-6;
       double            correction_tolerance  = 1e-6;
       CorrectionMeasure correction_measure    = CorrectionMeasure::contraction;
+      Predictor         predictor             = Predictor::keep_contact;
       unsigned int      max_line_search_steps = 6;
       unsigned int      picard_iterations     = 0;
       bool              picard_fallback       = true;

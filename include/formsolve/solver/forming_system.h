@@ -38,6 +38,10 @@ namespace formsolve
       /// A Newton solve of the step begins, from the state's velocity and
       /// holder velocity.
       void begin_solve();
+      /// The step's predictor @p v (the previous step's velocity, holder at
+      /// its last velocity), corrected at the contact nodes by Nonlinear
+      /// solver/Predictor (contact::keep_contact). Call after begin_step().
+      void predict(VectorType &v);
 
       /// Factors of the pairs of the last assembly (one per pair).
       const std::vector<double> &penalty_factors() const { return epsilon; }
