@@ -47,6 +47,7 @@ int main(int argc, char **argv)
   contact_prm.upper_bound         = 1e6;
   contact_prm.freeze              = false;
   contact_prm.damping             = 1e300; // no damping: test the estimate
+  contact_prm.target_fraction     = 1;     // the published method aims at delta
 
   const tools::ToolSet<3> tools(tool_prm, contact_prm, 1.);
 

@@ -30,7 +30,7 @@ namespace formsolve
       bool             freeze                  = true;
       AdaptiveEstimate adaptive_estimate       = AdaptiveEstimate::force;
       double           damping                 = 10;
-      double           target_fraction         = 1;
+      double           target_fraction         = 0.9;
       unsigned int     max_status_flips        = 4;
       unsigned int     max_strict_passes       = 5;
       double           strict_check_residual   = 0.1;  // |r|/|f|; 0: off
