@@ -96,21 +96,28 @@ namespace formsolve
     }
 
     template <int dim>
-    void FormingSystem<dim>::predict(VectorType &v)
+    void FormingSystem<dim>::find_pairs(const VectorType &v, const double w)
     {
-      if (prm.nonlinear.predictor != parameters::Predictor::keep_contact)
-        return;
-      TimerOutput::Scope t(timer, "contact");
       state.velocity_ghost = v;
       if (holder_controlled())
-        state.tools.set_axial_velocity(state.tools.holder_index(),
-                                       state.holder.velocity);
+        state.tools.set_axial_velocity(state.tools.holder_index(), w);
       search.evaluate(state.tools,
                       state.displacement_ghost,
                       state.velocity_ghost,
                       dt,
                       state.contact_state,
                       state.contact_set);
+    }
+
+    template <int dim>
+    void FormingSystem<dim>::predict(VectorType &v)
+    {
+      if (prm.nonlinear.predictor != parameters::Predictor::keep_contact)
+        return;
+      TimerOutput::Scope t(timer, "contact");
+      // No track_status(): the status of the previous solve is what
+      // keep_contact() reads.
+      find_pairs(v, state.holder.velocity);
       VectorType change(state.owned, state.comm);
       contact::keep_contact(state.contact_set,
                             state.contact_state,
@@ -150,17 +157,9 @@ namespace formsolve
                                         const bool        newton,
                                         const bool        with_matrix)
     {
-      state.velocity_ghost = v;
-      if (holder_controlled())
-        state.tools.set_axial_velocity(state.tools.holder_index(), w_trial);
       {
         TimerOutput::Scope t(timer, "contact");
-        search.evaluate(state.tools,
-                        state.displacement_ghost,
-                        state.velocity_ghost,
-                        dt,
-                        state.contact_state,
-                        state.contact_set);
+        find_pairs(v, w_trial);
         state.contact_state.track_status(state.contact_set,
                                          prm.contact.max_status_flips);
       }

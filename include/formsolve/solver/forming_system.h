@@ -92,6 +92,9 @@ namespace formsolve
       double extra_correction() const override;
 
     private:
+      /// The contact search at velocity @p v with the holder at axial
+      /// velocity @p w (under force control): the state's contact set.
+      void find_pairs(const VectorType &v, const double w);
       /// Contact search, body and contact terms at @p v; the matrices only
       /// with @p with_matrix.
       double
