@@ -359,6 +359,22 @@ namespace formsolve
         "The files are removed when the factors are dropped; a run that is "
         "killed leaves files named formsolve_* there. Empty: the factors stay "
         "in memory.");
+      prm.declare_entry(
+        "Factor precision",
+        "double",
+        Selection("double|single"),
+        "Direct solver = MUMPS: the arithmetic of the factorisation. double: "
+        "the factors solve to round-off. single: MUMPS factorises the matrix "
+        "rounded to single precision (half the factor memory, fewer "
+        "operands to move); every solve is then GMRES in double precision "
+        "preconditioned by these factors, to Reuse tolerance within "
+        "Single-precision iterations (doc/performance.md).");
+      prm.declare_entry(
+        "Single-precision iterations",
+        "20",
+        Integer(1, 1000),
+        "Factor precision = single: GMRES iterations allowed before the "
+        "linear solve fails (the Newton step is then cut back).");
       prm.leave_subsection();
     }
 
@@ -398,6 +414,11 @@ namespace formsolve
       low_rank_tolerance    = prm.get_double("Low-rank tolerance");
       low_rank_iterations   = prm.get_integer("Low-rank iterations");
       out_of_core_directory = prm.get("Out-of-core directory");
+      factor_precision      = prm.get("Factor precision") == "single"
+                                ? FactorPrecision::single_precision
+                                : FactorPrecision::double_precision;
+      single_precision_iterations =
+        prm.get_integer("Single-precision iterations");
       prm.leave_subsection();
     }
 
@@ -433,6 +454,14 @@ namespace formsolve
               "Linear solver/Unsymmetric tangent",
               "= symmetric part needs Refinement steps = 0 (GMRES refines "
               "the solve)");
+      const bool single = factor_precision == FactorPrecision::single_precision;
+      require(!single || (type == LinearSolverType::direct &&
+                          direct_solver == DirectSolver::mumps),
+              "Linear solver/Factor precision",
+              "= single needs Type = direct and Direct solver = MUMPS");
+      require(!single || refinement_steps == 0,
+              "Linear solver/Factor precision",
+              "= single needs Refinement steps = 0 (GMRES refines the solve)");
       if (!out_of_core_directory.empty())
         {
           const std::string entry = "Linear solver/Out-of-core directory";

@@ -130,6 +130,9 @@ namespace formsolve
           settings.refinement_steps      = prm.refinement_steps;
           settings.low_rank_tolerance    = prm.low_rank_tolerance;
           settings.out_of_core_directory = prm.out_of_core_directory;
+          settings.single_precision =
+            prm.factor_precision ==
+            parameters::FactorPrecision::single_precision;
           mumps.reset();
           const auto t = phase(timer, "linear solve: analysis");
           mumps =
@@ -254,29 +257,46 @@ namespace formsolve
       const bool low_rank = prm.low_rank_tolerance > 0;
       const bool symmetric_part =
         mumps != nullptr && mumps->factors_symmetric_part();
-      if (!low_rank && !symmetric_part)
+      const bool single = mumps != nullptr && mumps->factors_single();
+      if (!low_rank && !symmetric_part && !single)
         {
           substitute(x, b);
           return 1;
         }
-      // Low-rank factors, or those of the symmetric part, are approximate:
-      // GMRES makes the solve as exact as the reuse tolerance asks.
+      // Low-rank, single-precision factors, or those of the symmetric part,
+      // are approximate: GMRES makes the solve as exact as the reuse
+      // tolerance asks.
       const unsigned int limit =
         (low_rank ? prm.low_rank_iterations : 0) +
-        (symmetric_part ? prm.symmetric_part_iterations : 0);
+        (symmetric_part ? prm.symmetric_part_iterations : 0) +
+        (single ? prm.single_precision_iterations : 0);
       x                = 0;
       unsigned int its = 0;
-      AssertThrow(
-        gmres_with_factors(*last_matrix, x, b, limit, its),
-        ExcMessage(
-          std::string("GMRES with the ") +
-          (low_rank ? "low-rank factors" : "factors of the symmetric part") +
-          " did not reach Linear solver/Reuse tolerance within " +
-          std::to_string(limit) + " iterations (" +
-          (low_rank
-             ? "Low-rank iterations; lower Linear solver/Low-rank tolerance"
-             : "Symmetric-part iterations; or Unsymmetric tangent = LU") +
-          ")"));
+      if (gmres_with_factors(*last_matrix, x, b, limit, its))
+        return its;
+      // Which approximation failed, and the entries that would help.
+      std::string which, remedy;
+      const auto  name = [&](const bool used, const char *w, const char *r) {
+        if (used)
+          {
+            which += w;
+            remedy += remedy.empty() ? r : std::string("; ") + r;
+          }
+      };
+      name(low_rank,
+           "low-rank ",
+           "Low-rank iterations, or a lower Low-rank tolerance");
+      name(single,
+           "single-precision ",
+           "Single-precision iterations, or Factor precision = double");
+      name(symmetric_part,
+           "symmetric-part ",
+           "Symmetric-part iterations, or Unsymmetric tangent = LU");
+      AssertThrow(false,
+                  ExcMessage("Linear solver: GMRES with the " + which +
+                             "factors did not reach Reuse tolerance within " +
+                             std::to_string(limit) + " iterations (raise " +
+                             remedy + ")"));
       return its;
     }
 

@@ -6,6 +6,7 @@
 
 #include <Epetra_CrsMatrix.h>
 #include <dmumps_c.h>
+#include <smumps_c.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -21,14 +22,57 @@ namespace formsolve
 #define ICNTL(i) id.icntl[(i)-1]
 #define INFOG(i) id.infog[(i)-1]
 
+    namespace
+    {
+      /// MUMPS's structure and entry point of one precision.
+      template <typename Real>
+      struct Precision;
+      template <>
+      struct Precision<double>
+      {
+        using Structure = DMUMPS_STRUC_C;
+        static void run(Structure &id) { dmumps_c(&id); }
+      };
+      template <>
+      struct Precision<float>
+      {
+        using Structure = SMUMPS_STRUC_C;
+        static void run(Structure &id) { smumps_c(&id); }
+      };
+    } // namespace
+
     struct MumpsDirect::Data
     {
-      DMUMPS_STRUC_C id;
-      MPI_Comm       comm;
-      bool           root = false;
+      virtual ~Data()                                                 = default;
+      virtual void   analyse(const TrilinosWrappers::SparseMatrix &A) = 0;
+      virtual void   factorise(const TrilinosWrappers::SparseMatrix &A) = 0;
+      virtual void   solve(TrilinosWrappers::MPI::Vector       &x,
+                           const TrilinosWrappers::MPI::Vector &b)      = 0;
+      virtual double memory_mb() const                                  = 0;
+      virtual double factor_entries() const                             = 0;
+    };
+
+    template <typename Real>
+    class MumpsDirect::Instance : public MumpsDirect::Data
+    {
+    public:
+      Instance(const MPI_Comm comm, const Settings &settings);
+      ~Instance() override;
+      void   analyse(const TrilinosWrappers::SparseMatrix &A) override;
+      void   factorise(const TrilinosWrappers::SparseMatrix &A) override;
+      void   solve(TrilinosWrappers::MPI::Vector       &x,
+                   const TrilinosWrappers::MPI::Vector &b) override;
+      double memory_mb() const override;
+      double factor_entries() const override;
+
+    private:
+      const Settings                      settings;
+      typename Precision<Real>::Structure id;
+      MPI_Comm                            comm;
+      bool                                root = false;
       /// Input triangle (global, 1-based) and values, in row-view order.
-      std::vector<int>    irn, jcn;
-      std::vector<double> values;
+      std::vector<int>  irn, jcn;
+      std::vector<Real> values;
       /// Per row-view entry of the local matrix: kept in the input.
       std::vector<bool> kept;
       /// symmetric_part: per input entry, the local row and the position in
@@ -40,23 +84,73 @@ namespace formsolve
       /// Right-hand side gather: global index of each local row; on the
       /// root, counts, offsets and the indices of all ranks.
       std::vector<int>    local_rows, counts, offsets, all_rows;
-      std::vector<double> rhs, buffer;
+      std::vector<Real>   rhs;
+      std::vector<double> buffer;
+
+      /// Copies the values of @p A's stored entries (the triangle kept at
+      /// analysis) into the MUMPS input, averaged with their transposes when
+      /// symmetric_part is set.
+      void copy_values(const TrilinosWrappers::SparseMatrix &A);
+      /// symmetric_part: where each input entry's transpose is stored.
+      void find_mirrors(const TrilinosWrappers::SparseMatrix &A);
+      /// One MUMPS call (JOB = @p job), then check(@p what).
+      void call(const int job, const char *what);
+      /// Throws if MUMPS's last call failed (INFOG(1) < 0; the same on all
+      /// ranks).
+      void check(const char *what) const;
     };
 
     MumpsDirect::MumpsDirect(const MPI_Comm comm, const Settings &s)
-        : data(std::make_unique<Data>())
-        , settings(s)
+        : settings(s)
     {
-      auto &id   = data->id;
-      data->comm = comm;
-      data->root = Utilities::MPI::this_mpi_process(comm) == 0;
-      id.job     = -1;
-      id.par     = 1; // the host works too
+      if (settings.single_precision)
+        data = std::make_unique<Instance<float>>(comm, settings);
+      else
+        data = std::make_unique<Instance<double>>(comm, settings);
+    }
+
+    MumpsDirect::~MumpsDirect() = default;
+
+    void MumpsDirect::analyse(const TrilinosWrappers::SparseMatrix &A)
+    {
+      data->analyse(A);
+    }
+
+    void MumpsDirect::factorise(const TrilinosWrappers::SparseMatrix &A)
+    {
+      data->factorise(A);
+    }
+
+    void MumpsDirect::solve(TrilinosWrappers::MPI::Vector       &x,
+                            const TrilinosWrappers::MPI::Vector &b)
+    {
+      data->solve(x, b);
+    }
+
+    double MumpsDirect::memory_mb() const
+    {
+      return data->memory_mb();
+    }
+
+    double MumpsDirect::factor_entries() const
+    {
+      return data->factor_entries();
+    }
+
+    template <typename Real>
+    MumpsDirect::Instance<Real>::Instance(const MPI_Comm c, const Settings &s)
+        : settings(s)
+        , id()
+        , comm(c)
+    {
+      root   = Utilities::MPI::this_mpi_process(comm) == 0;
+      id.job = -1;
+      id.par = 1; // the host works too
       Assert(settings.symmetric || !settings.symmetric_part,
              ExcInternalError());
       id.sym          = settings.symmetric ? 2 : 0;
       id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
-      dmumps_c(&id);
+      Precision<Real>::run(id);
       AssertThrow(INFOG(1) >= 0,
                   ExcMessage("MUMPS initialisation failed: INFOG(1) = " +
                              std::to_string(INFOG(1))));
@@ -97,22 +191,24 @@ namespace formsolve
         }
     }
 
-    MumpsDirect::~MumpsDirect()
+    template <typename Real>
+    MumpsDirect::Instance<Real>::~Instance()
     {
-      data->id.job = -2;
-      dmumps_c(&data->id);
+      id.job = -2;
+      Precision<Real>::run(id);
     }
 
-    void MumpsDirect::call(const int job, const char *what)
+    template <typename Real>
+    void MumpsDirect::Instance<Real>::call(const int job, const char *what)
     {
-      data->id.job = job;
-      dmumps_c(&data->id);
+      id.job = job;
+      Precision<Real>::run(id);
       check(what);
     }
 
-    void MumpsDirect::check(const char *what) const
+    template <typename Real>
+    void MumpsDirect::Instance<Real>::check(const char *what) const
     {
-      const auto &id = data->id;
       AssertThrow(INFOG(1) >= 0,
                   ExcMessage(
                     std::string("MUMPS ") + what +
@@ -121,145 +217,98 @@ namespace formsolve
                     (INFOG(1) == -10 ? " (numerically singular matrix)" : "")));
     }
 
-    void MumpsDirect::analyse(const TrilinosWrappers::SparseMatrix &A)
+    template <typename Real>
+    void MumpsDirect::Instance<Real>::analyse(
+      const TrilinosWrappers::SparseMatrix &A)
     {
-      auto                   &d  = *data;
-      auto                   &id = d.id;
-      const Epetra_CrsMatrix &m  = A.trilinos_matrix();
-      d.irn.clear();
-      d.jcn.clear();
-      d.kept.clear();
-      d.local_rows.resize(m.NumMyRows());
+      const Epetra_CrsMatrix &m = A.trilinos_matrix();
+      irn.clear();
+      jcn.clear();
+      kept.clear();
+      local_rows.resize(m.NumMyRows());
       for (int r = 0; r < m.NumMyRows(); ++r)
         {
           int     length;
           double *v;
           int    *columns;
           m.ExtractMyRowView(r, length, v, columns);
-          const int row   = m.RowMap().GID(r);
-          d.local_rows[r] = row;
+          const int row = m.RowMap().GID(r);
+          local_rows[r] = row;
           for (int k = 0; k < length; ++k)
             {
               const int  column = m.ColMap().GID(columns[k]);
               const bool keep   = !settings.symmetric || column <= row;
-              d.kept.push_back(keep);
+              kept.push_back(keep);
               if (keep)
                 {
-                  d.irn.push_back(row + 1);
-                  d.jcn.push_back(column + 1);
+                  irn.push_back(row + 1);
+                  jcn.push_back(column + 1);
                 }
             }
         }
-      d.values.resize(d.irn.size());
+      values.resize(irn.size());
       if (settings.symmetric_part)
         find_mirrors(A);
       id.n = m.NumGlobalRows();
-      if (Utilities::MPI::n_mpi_processes(d.comm) == 1)
+      if (Utilities::MPI::n_mpi_processes(comm) == 1)
         {
           // One rank: centralised input, which lets MUMPS permute large
           // entries to the diagonal and scale (ICNTL(6), not available with
           // distributed input).
           ICNTL(18) = 0;
-          id.nnz    = d.irn.size();
-          id.irn    = d.irn.data();
-          id.jcn    = d.jcn.data();
-          id.a      = d.values.data();
+          id.nnz    = irn.size();
+          id.irn    = irn.data();
+          id.jcn    = jcn.data();
+          id.a      = values.data();
         }
       else
         {
-          id.nnz_loc = d.irn.size();
-          id.irn_loc = d.irn.data();
-          id.jcn_loc = d.jcn.data();
-          id.a_loc   = d.values.data();
+          id.nnz_loc = irn.size();
+          id.irn_loc = irn.data();
+          id.jcn_loc = jcn.data();
+          id.a_loc   = values.data();
         }
 
       // Gathers of the right-hand side: row counts and indices per rank.
-      const int n_ranks = Utilities::MPI::n_mpi_processes(d.comm);
-      const int n_local = d.local_rows.size();
-      d.counts.assign(n_ranks, 0);
-      MPI_Gather(&n_local, 1, MPI_INT, d.counts.data(), 1, MPI_INT, 0, d.comm);
-      d.offsets.assign(n_ranks + 1, 0);
+      const int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+      const int n_local = local_rows.size();
+      counts.assign(n_ranks, 0);
+      MPI_Gather(&n_local, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+      offsets.assign(n_ranks + 1, 0);
       for (int p = 0; p < n_ranks; ++p)
-        d.offsets[p + 1] = d.offsets[p] + d.counts[p];
-      d.all_rows.resize(d.root ? id.n : 0);
-      MPI_Gatherv(d.local_rows.data(),
+        offsets[p + 1] = offsets[p] + counts[p];
+      all_rows.resize(root ? id.n : 0);
+      MPI_Gatherv(local_rows.data(),
                   n_local,
                   MPI_INT,
-                  d.all_rows.data(),
-                  d.counts.data(),
-                  d.offsets.data(),
+                  all_rows.data(),
+                  counts.data(),
+                  offsets.data(),
                   MPI_INT,
                   0,
-                  d.comm);
-      d.rhs.resize(d.root ? id.n : 0);
-      d.buffer.resize(d.root ? id.n : 0);
+                  comm);
+      rhs.resize(root ? id.n : 0);
+      buffer.resize(root ? id.n : 0);
 
       if (settings.metis_order)
         {
-          // The pattern on the root (MUMPS gathers it there too, for its
-          // sequential analysis); METIS on its graph.
-          const int        n_entries = d.irn.size();
-          std::vector<int> entry_counts(n_ranks), entry_offsets(n_ranks + 1);
-          MPI_Gather(&n_entries,
-                     1,
-                     MPI_INT,
-                     entry_counts.data(),
-                     1,
-                     MPI_INT,
-                     0,
-                     d.comm);
-          for (int p = 0; p < n_ranks; ++p)
-            entry_offsets[p + 1] = entry_offsets[p] + entry_counts[p];
-          std::vector<int> rows(d.root ? entry_offsets[n_ranks] : 0),
-            columns(rows.size());
-          std::vector<int> local(d.irn.size());
-          for (unsigned int which = 0; which < 2; ++which)
-            {
-              const auto &source = which == 0 ? d.irn : d.jcn;
-              auto       &target = which == 0 ? rows : columns;
-              for (std::size_t k = 0; k < source.size(); ++k)
-                local[k] = source[k] - 1;
-              MPI_Gatherv(local.data(),
-                          n_entries,
-                          MPI_INT,
-                          target.data(),
-                          entry_counts.data(),
-                          entry_offsets.data(),
-                          MPI_INT,
-                          0,
-                          d.comm);
-            }
-          // METIS runs on the root only: its failure must stop every rank
-          // (the others would wait in MUMPS's analysis).
-          std::string failure;
-          if (d.root)
-            try
-              {
-                d.pivot_position = nested_dissection(id.n, rows, columns);
-                for (auto &p : d.pivot_position)
-                  ++p;
-                id.perm_in = d.pivot_position.data();
-              }
-            catch (const std::exception &e)
-              {
-                failure = e.what();
-              }
-          failure = Utilities::MPI::broadcast(d.comm, failure, 0);
-          AssertThrow(failure.empty(),
-                      ExcMessage("Linear solver/Ordering = METIS: " + failure));
+          pivot_position = gathered_nested_dissection(comm, id.n, irn, jcn);
+          if (root)
+            id.perm_in = pivot_position.data();
         }
       call(1, "analysis");
     }
 
-    void MumpsDirect::find_mirrors(const TrilinosWrappers::SparseMatrix &A)
+    template <typename Real>
+    void MumpsDirect::Instance<Real>::find_mirrors(
+      const TrilinosWrappers::SparseMatrix &A)
     {
-      auto                   &d = *data;
       const Epetra_CrsMatrix &m = A.trilinos_matrix();
-      d.mirror_row.assign(d.irn.size(), -1);
-      d.mirror_position.assign(d.irn.size(), -1);
-      for (std::size_t i = 0; i < d.irn.size(); ++i)
+      mirror_row.assign(irn.size(), -1);
+      mirror_position.assign(irn.size(), -1);
+      for (std::size_t i = 0; i < irn.size(); ++i)
         {
-          const int row = d.irn[i] - 1, column = d.jcn[i] - 1;
+          const int row = irn[i] - 1, column = jcn[i] - 1;
           const int local = m.RowMap().LID(column);
           if (row == column || local < 0)
             continue;
@@ -270,16 +319,17 @@ namespace formsolve
           for (int k = 0; k < length; ++k)
             if (m.ColMap().GID(columns[k]) == row)
               {
-                d.mirror_row[i]      = local;
-                d.mirror_position[i] = k;
+                mirror_row[i]      = local;
+                mirror_position[i] = k;
                 break;
               }
         }
     }
 
-    void MumpsDirect::copy_values(const TrilinosWrappers::SparseMatrix &A)
+    template <typename Real>
+    void MumpsDirect::Instance<Real>::copy_values(
+      const TrilinosWrappers::SparseMatrix &A)
     {
-      auto                   &d = *data;
       const Epetra_CrsMatrix &m = A.trilinos_matrix();
       std::size_t             e = 0, i = 0;
       for (int r = 0; r < m.NumMyRows(); ++r)
@@ -290,38 +340,39 @@ namespace formsolve
           m.ExtractMyRowView(r, length, v, columns);
           for (int k = 0; k < length; ++k, ++e)
             {
-              AssertThrow(e < d.kept.size(),
+              AssertThrow(e < kept.size(),
                           ExcMessage("MUMPS: the sparsity pattern changed "
                                      "since the analysis"));
-              if (d.kept[e])
-                d.values[i++] = v[k];
+              if (kept[e])
+                values[i++] = v[k];
             }
         }
-      AssertThrow(e == d.kept.size(),
+      AssertThrow(e == kept.size(),
                   ExcMessage("MUMPS: the sparsity pattern changed since the "
                              "analysis"));
       if (!settings.symmetric_part)
         return;
-      for (std::size_t k = 0; k < d.values.size(); ++k)
-        if (d.mirror_row[k] >= 0)
+      for (std::size_t k = 0; k < values.size(); ++k)
+        if (mirror_row[k] >= 0)
           {
             int     length;
             double *v;
             int    *columns;
-            m.ExtractMyRowView(d.mirror_row[k], length, v, columns);
-            d.values[k] = 0.5 * (d.values[k] + v[d.mirror_position[k]]);
+            m.ExtractMyRowView(mirror_row[k], length, v, columns);
+            values[k] = 0.5 * (values[k] + v[mirror_position[k]]);
           }
     }
 
-    void MumpsDirect::factorise(const TrilinosWrappers::SparseMatrix &A)
+    template <typename Real>
+    void MumpsDirect::Instance<Real>::factorise(
+      const TrilinosWrappers::SparseMatrix &A)
     {
       copy_values(A);
-      auto &id = data->id;
       // Too little workspace for the pivoting MUMPS met: more, and again.
       for (unsigned int attempt = 0;; ++attempt)
         {
           id.job = 2;
-          dmumps_c(&id);
+          Precision<Real>::run(id);
           const bool workspace = INFOG(1) == -8 || INFOG(1) == -9 ||
                                  INFOG(1) == -14 || INFOG(1) == -15 ||
                                  INFOG(1) == -17 || INFOG(1) == -20;
@@ -332,56 +383,58 @@ namespace formsolve
       check("numeric factorisation");
     }
 
-    void MumpsDirect::solve(TrilinosWrappers::MPI::Vector       &x,
-                            const TrilinosWrappers::MPI::Vector &b)
+    template <typename Real>
+    void
+    MumpsDirect::Instance<Real>::solve(TrilinosWrappers::MPI::Vector       &x,
+                                       const TrilinosWrappers::MPI::Vector &b)
     {
-      auto         &d       = *data;
-      auto         &id      = d.id;
-      const int     n_local = d.local_rows.size();
+      const int     n_local = local_rows.size();
       const double *source  = b.trilinos_vector()[0];
       MPI_Gatherv(source,
                   n_local,
                   MPI_DOUBLE,
-                  d.buffer.data(),
-                  d.counts.data(),
-                  d.offsets.data(),
+                  buffer.data(),
+                  counts.data(),
+                  offsets.data(),
                   MPI_DOUBLE,
                   0,
-                  d.comm);
-      if (d.root)
+                  comm);
+      if (root)
         for (int k = 0; k < id.n; ++k)
-          d.rhs[d.all_rows[k]] = d.buffer[k];
-      id.rhs  = d.rhs.data();
+          rhs[all_rows[k]] = buffer[k];
+      id.rhs  = rhs.data();
       id.nrhs = 1;
       id.lrhs = id.n;
       call(3, "solve");
-      if (d.root)
+      if (root)
         for (int k = 0; k < id.n; ++k)
-          d.buffer[k] = d.rhs[d.all_rows[k]];
-      MPI_Scatterv(d.buffer.data(),
-                   d.counts.data(),
-                   d.offsets.data(),
+          buffer[k] = rhs[all_rows[k]];
+      MPI_Scatterv(buffer.data(),
+                   counts.data(),
+                   offsets.data(),
                    MPI_DOUBLE,
                    x.trilinos_vector()[0],
                    n_local,
                    MPI_DOUBLE,
                    0,
-                   d.comm);
+                   comm);
     }
 
-    double MumpsDirect::memory_mb() const
+    template <typename Real>
+    double MumpsDirect::Instance<Real>::memory_mb() const
     {
-      const auto &id = data->id;
       return INFOG(22);
     }
 
-    double MumpsDirect::factor_entries() const
+    template <typename Real>
+    double MumpsDirect::Instance<Real>::factor_entries() const
     {
-      const auto &id = data->id;
       // Negative: in millions. INFOG(35): after low-rank compression.
       const int entries =
         settings.low_rank_tolerance > 0 ? INFOG(35) : INFOG(29);
       return entries >= 0 ? entries : -1e6 * entries;
     }
+    template class MumpsDirect::Instance<double>;
+    template class MumpsDirect::Instance<float>;
   } // namespace solver
 } // namespace formsolve

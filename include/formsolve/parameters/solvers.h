@@ -94,6 +94,12 @@ namespace formsolve
       lu,            // LU of the tangent: exact factors
       symmetric_part // LDL^T of (K + K^T)/2, GMRES on K preconditioned by it
     };
+    /// MUMPS: the arithmetic of the factors.
+    enum class FactorPrecision
+    {
+      double_precision, // exact factors up to round-off
+      single_precision  // float factors, GMRES preconditioned by them
+    };
     enum class IterativeSolver
     {
       gmres,
@@ -144,6 +150,10 @@ namespace formsolve
       unsigned int low_rank_iterations = 20;
       /// MUMPS out-of-core factors in this directory; empty: in memory.
       std::string out_of_core_directory;
+      /// MUMPS: single-precision factors as GMRES's preconditioner.
+      FactorPrecision factor_precision = FactorPrecision::double_precision;
+      /// GMRES iterations allowed with single-precision factors.
+      unsigned int single_precision_iterations = 20;
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);

@@ -3,7 +3,8 @@
 // locally owned rows, symmetric LDL^T when the tangent is symmetric, a METIS
 // nested-dissection pivot order, and the analysis kept while the sparsity
 // pattern stays the same. Amesos cannot pass the lower triangle or a pivot
-// order (../shared/research/linear-solvers.md).
+// order (../shared/research/linear-solvers.md). Double (dmumps) or single
+// precision (smumps) factors.
 #pragma once
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -43,6 +44,10 @@ namespace formsolve
         /// this directory by the factorisation and read back by every
         /// solve; empty: held in memory.
         std::string out_of_core_directory;
+        /// Factors in single precision (MUMPS's smumps): half the memory and
+        /// about half the factorisation time; the factors are then
+        /// approximate (a preconditioner).
+        bool single_precision = false;
       };
 
       MumpsDirect(const MPI_Comm comm, const Settings &settings);
@@ -60,6 +65,8 @@ namespace formsolve
 
       /// The factors are those of the symmetric part, not of the matrix.
       bool factors_symmetric_part() const { return settings.symmetric_part; }
+      /// The factors are in single precision.
+      bool factors_single() const { return settings.single_precision; }
 
       /// Memory the last factorisation used on all ranks (MB, INFOG(22)).
       double memory_mb() const;
@@ -68,21 +75,12 @@ namespace formsolve
       double factor_entries() const;
 
     private:
+      /// The MUMPS instance, of one precision (source/solver/mumps_direct.cc).
       struct Data;
+      template <typename Real>
+      class Instance;
       std::unique_ptr<Data> data;
       Settings              settings;
-
-      /// Copies the values of @p A's stored entries (the triangle kept at
-      /// analysis) into the MUMPS input, averaged with their transposes when
-      /// symmetric_part is set.
-      void copy_values(const dealii::TrilinosWrappers::SparseMatrix &A);
-      /// symmetric_part: where each input entry's transpose is stored.
-      void find_mirrors(const dealii::TrilinosWrappers::SparseMatrix &A);
-      /// One MUMPS call (JOB = @p job), then check(@p what).
-      void call(const int job, const char *what);
-      /// Throws if MUMPS's last call failed (INFOG(1) < 0; the same on all
-      /// ranks).
-      void check(const char *what) const;
     };
   } // namespace solver
 } // namespace formsolve

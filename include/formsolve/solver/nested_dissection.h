@@ -3,6 +3,8 @@
 // but accepts a given pivot order.
 #pragma once
 
+#include <mpi.h>
+
 #include <vector>
 
 namespace formsolve
@@ -19,5 +21,15 @@ namespace formsolve
     std::vector<int> nested_dissection(const int               n,
                                        const std::vector<int> &rows,
                                        const std::vector<int> &cols);
+
+    /// The same for a matrix whose nonzero positions are spread over the
+    /// ranks of @p comm (@p rows, @p cols 1-based, as MUMPS takes them): the
+    /// pattern is gathered on rank 0, which runs METIS. Returns the 1-based
+    /// positions on rank 0 (MUMPS's PERM_IN), nothing elsewhere. A failure
+    /// throws on every rank.
+    std::vector<int> gathered_nested_dissection(const MPI_Comm          comm,
+                                                const int               n,
+                                                const std::vector<int> &rows,
+                                                const std::vector<int> &cols);
   } // namespace solver
 } // namespace formsolve
