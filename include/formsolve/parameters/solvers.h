@@ -62,8 +62,8 @@ namespace formsolve
       /// of an inexact Newton step under sliding friction.
       bool              symmetrise_friction   = false;
       unsigned int      max_iterations        = 60;
-      double            residual_tolerance    = 1e-6;
-      double            correction_tolerance  = 1e-6;
+      double            residual_tolerance    = 1e-5;
+      double            correction_tolerance  = 1e-5;
       CorrectionMeasure correction_measure    = CorrectionMeasure::contraction;
       Predictor         predictor             = Predictor::keep_contact;
       unsigned int      max_line_search_steps = 6;
