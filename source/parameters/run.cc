@@ -107,8 +107,12 @@ namespace formsolve
            l.unsymmetric_factors == UnsymmetricFactors::symmetric_part);
         if (!l.out_of_core_directory.empty())
           return {9e3, "MUMPS, factors out of core"};
-        if (ldlt)
-          return {15e3, "MUMPS LDL^T in core"};
+        // Single precision: 10.8 and 13.8 kB/DoF measured at 187k and 262k
+        // DoFs on 2 ranks (doc/performance.md, "Single-precision factors").
+        if (ldlt || l.factor_precision == FactorPrecision::single_precision)
+          return {15e3,
+                  ldlt ? "MUMPS LDL^T in core"
+                       : "MUMPS single-precision factors in core"};
         return {19e3, "MUMPS LU in core"};
       }
     } // namespace
