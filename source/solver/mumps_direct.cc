@@ -5,11 +5,15 @@
 #include <formsolve/solver/nested_dissection.h>
 
 #include <Epetra_CrsMatrix.h>
+#include <Epetra_Export.h>
+#include <Epetra_Map.h>
+#include <Epetra_Vector.h>
 #include <dmumps_c.h>
 #include <smumps_c.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 namespace formsolve
@@ -81,11 +85,17 @@ namespace formsolve
       std::vector<int> mirror_row, mirror_position;
       /// Pivot order (root, 1-based).
       std::vector<int> pivot_position;
-      /// Right-hand side gather: global index of each local row; on the
-      /// root, counts, offsets and the indices of all ranks.
-      std::vector<int>    local_rows, counts, offsets, all_rows;
-      std::vector<Real>   rhs;
-      std::vector<double> buffer;
+      /// Global index of each local row (0-based; 1-based for MUMPS's
+      /// distributed right-hand side) and that right-hand side.
+      std::vector<int>  local_rows, rhs_rows;
+      std::vector<Real> rhs;
+      /// The distributed solution: the unknowns this rank eliminated
+      /// (ISOL_loc, 1-based), their values, and the export to the vector's
+      /// rows, rebuilt when a solve returns other rows on any rank.
+      std::vector<int>               solution_rows, exported_rows;
+      std::vector<Real>              solution;
+      std::unique_ptr<Epetra_Map>    solution_map;
+      std::unique_ptr<Epetra_Export> to_owner;
 
       /// Copies the values of @p A's stored entries (the triangle kept at
       /// analysis) into the MUMPS input, averaged with their transposes when
@@ -269,26 +279,15 @@ namespace formsolve
           id.a_loc   = values.data();
         }
 
-      // Gathers of the right-hand side: row counts and indices per rank.
-      const int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-      const int n_local = local_rows.size();
-      counts.assign(n_ranks, 0);
-      MPI_Gather(&n_local, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-      offsets.assign(n_ranks + 1, 0);
-      for (int p = 0; p < n_ranks; ++p)
-        offsets[p + 1] = offsets[p] + counts[p];
-      all_rows.resize(root ? id.n : 0);
-      MPI_Gatherv(local_rows.data(),
-                  n_local,
-                  MPI_INT,
-                  all_rows.data(),
-                  counts.data(),
-                  offsets.data(),
-                  MPI_INT,
-                  0,
-                  comm);
-      rhs.resize(root ? id.n : 0);
-      buffer.resize(root ? id.n : 0);
+      // Right-hand side and solution distributed (ICNTL(20) = 10,
+      // ICNTL(21) = 1): no vector of the whole system passes through rank 0
+      // in a solve.
+      ICNTL(20) = 10;
+      ICNTL(21) = 1;
+      rhs_rows.resize(local_rows.size());
+      for (std::size_t k = 0; k < local_rows.size(); ++k)
+        rhs_rows[k] = local_rows[k] + 1;
+      rhs.resize(local_rows.size());
 
       if (settings.metis_order)
         {
@@ -381,6 +380,15 @@ namespace formsolve
           ICNTL(14) = 2 * std::max(ICNTL(14), 20);
         }
       check("numeric factorisation");
+      // INFO(23): the unknowns this rank eliminated; its share of every
+      // solution comes back there, which may differ after a factorisation
+      // (delayed pivots).
+      const int n_pivots = id.info[22];
+      solution_rows.assign(n_pivots, 0);
+      solution.assign(n_pivots, 0);
+      id.lsol_loc = n_pivots;
+      id.isol_loc = solution_rows.data();
+      id.sol_loc  = solution.data();
     }
 
     template <typename Real>
@@ -388,36 +396,37 @@ namespace formsolve
     MumpsDirect::Instance<Real>::solve(TrilinosWrappers::MPI::Vector       &x,
                                        const TrilinosWrappers::MPI::Vector &b)
     {
-      const int     n_local = local_rows.size();
-      const double *source  = b.trilinos_vector()[0];
-      MPI_Gatherv(source,
-                  n_local,
-                  MPI_DOUBLE,
-                  buffer.data(),
-                  counts.data(),
-                  offsets.data(),
-                  MPI_DOUBLE,
-                  0,
-                  comm);
-      if (root)
-        for (int k = 0; k < id.n; ++k)
-          rhs[all_rows[k]] = buffer[k];
-      id.rhs  = rhs.data();
-      id.nrhs = 1;
-      id.lrhs = id.n;
+      const double *source = b.trilinos_vector()[0];
+      std::copy(source, source + rhs.size(), rhs.begin());
+      id.nloc_rhs = rhs.size();
+      id.lrhs_loc = rhs.size();
+      id.irhs_loc = rhs_rows.data();
+      id.rhs_loc  = rhs.data();
+      id.nrhs     = 1;
+      id.lrhs     = id.n;
       call(3, "solve");
-      if (root)
-        for (int k = 0; k < id.n; ++k)
-          buffer[k] = rhs[all_rows[k]];
-      MPI_Scatterv(buffer.data(),
-                   counts.data(),
-                   offsets.data(),
-                   MPI_DOUBLE,
-                   x.trilinos_vector()[0],
-                   n_local,
-                   MPI_DOUBLE,
-                   0,
-                   comm);
+      // The rows are those of the factorisation: compared, not rebuilt.
+      const bool changed =
+        Utilities::MPI::logical_or(!to_owner || solution_rows != exported_rows,
+                                   comm);
+      if (changed)
+        {
+          exported_rows = solution_rows;
+          std::vector<int> rows(solution_rows.size());
+          for (std::size_t k = 0; k < rows.size(); ++k)
+            rows[k] = solution_rows[k] - 1;
+          const Epetra_BlockMap &target = x.trilinos_vector().Map();
+          solution_map                  = std::make_unique<Epetra_Map>(-1,
+                                                      rows.size(),
+                                                      rows.data(),
+                                                      0,
+                                                      target.Comm());
+          to_owner = std::make_unique<Epetra_Export>(*solution_map, target);
+        }
+      Epetra_Vector values(*solution_map);
+      std::copy(solution.begin(), solution.end(), values.Values());
+      AssertThrow(x.trilinos_vector().Export(values, *to_owner, Insert) == 0,
+                  ExcMessage("MUMPS: the export of the solution failed"));
     }
 
     template <typename Real>

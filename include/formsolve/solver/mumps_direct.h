@@ -3,8 +3,9 @@
 // locally owned rows, symmetric LDL^T when the tangent is symmetric, a METIS
 // nested-dissection pivot order, and the analysis kept while the sparsity
 // pattern stays the same. Amesos cannot pass the lower triangle or a pivot
-// order (../shared/research/linear-solvers.md). Double (dmumps) or single
-// precision (smumps) factors.
+// order (../shared/research/linear-solvers.md). Right-hand side and
+// solution stay distributed. Double (dmumps) or single precision (smumps)
+// factors.
 #pragma once
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
