@@ -405,7 +405,8 @@ namespace formsolve
       id.nrhs     = 1;
       id.lrhs     = id.n;
       call(3, "solve");
-      // The rows are those of the factorisation: compared, not rebuilt.
+      // The export is rebuilt only when a factorisation moved the rows of
+      // the solution on some rank.
       const bool changed =
         Utilities::MPI::logical_or(!to_owner || solution_rows != exported_rows,
                                    comm);
