@@ -84,6 +84,20 @@ namespace formsolve
         Bool(),
         "Adaptive: stop updating the factors in a step once the "
         "contact set is unchanged between two iterations.");
+      prm.declare_entry(
+        "Factor update",
+        "iteration",
+        Selection("iteration|iteration and predictor|step"),
+        "Adaptive: when the factors are estimated. iteration: at every "
+        "Newton iteration from the current system (until 'Freeze factors' "
+        "stops them); at a step's predictor, where the body is far from "
+        "equilibrium, the last factors are kept. iteration and predictor: "
+        "at the predictor too (formsolve's behaviour before this entry "
+        "existed). step: each "
+        "Newton solve keeps the factors the last converged solve estimated "
+        "(pairs without one start from 'Penalty factor'); the estimate runs "
+        "at convergence, for the next solve, and at adaptive-strict's "
+        "correction within a solve. Measured in doc/convergence.md.");
       prm.declare_entry("Max status flips",
                         "4",
                         Integer(1),
@@ -125,21 +139,26 @@ namespace formsolve
     void Contact::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
-      penalty_strategy      = prm.get("Penalty strategy");
-      al_penalty            = prm.get("Augmented Lagrangian penalty");
-      penalty_factor        = prm.get_double("Penalty factor");
-      allowed_penetration   = prm.get_double("Allowed penetration");
-      lower_bound           = prm.get_double("Lower bound");
-      upper_bound           = prm.get_double("Upper bound");
-      freeze                = prm.get_bool("Freeze factors");
-      adaptive_estimate     = prm.get("Adaptive estimate") == "projection"
-                                ? AdaptiveEstimate::projection
-                                : AdaptiveEstimate::force;
-      damping               = prm.get_double("Damping");
-      target_fraction       = prm.get_double("Target fraction");
-      max_status_flips      = prm.get_integer("Max status flips");
-      max_strict_passes     = prm.get_integer("Max strict passes");
-      strict_check_residual = prm.get_double("Strict check residual");
+      penalty_strategy         = prm.get("Penalty strategy");
+      al_penalty               = prm.get("Augmented Lagrangian penalty");
+      penalty_factor           = prm.get_double("Penalty factor");
+      allowed_penetration      = prm.get_double("Allowed penetration");
+      lower_bound              = prm.get_double("Lower bound");
+      upper_bound              = prm.get_double("Upper bound");
+      freeze                   = prm.get_bool("Freeze factors");
+      const std::string update = prm.get("Factor update");
+      factor_update            = update == "step" ? FactorUpdate::step
+                                 : update == "iteration and predictor"
+                                   ? FactorUpdate::and_predictor
+                                   : FactorUpdate::iteration;
+      adaptive_estimate        = prm.get("Adaptive estimate") == "projection"
+                                   ? AdaptiveEstimate::projection
+                                   : AdaptiveEstimate::force;
+      damping                  = prm.get_double("Damping");
+      target_fraction          = prm.get_double("Target fraction");
+      max_status_flips         = prm.get_integer("Max status flips");
+      max_strict_passes        = prm.get_integer("Max strict passes");
+      strict_check_residual    = prm.get_double("Strict check residual");
       regularisation_velocity =
         prm.get_double("Friction regularisation velocity");
       search_distance = prm.get_double("Search distance");

@@ -81,6 +81,7 @@ namespace formsolve
       // linearisation point lies in another configuration (and a resumed run
       // must iterate as the uninterrupted one).
       dual.reset();
+      strategy.begin_step();
       hold_holder     = true;
       step_max_linear = 0;
       step_condition  = 0;
@@ -93,6 +94,21 @@ namespace formsolve
       strategy.begin_solve();
       w_accepted = w_trial = state.holder.velocity;
       dw                   = 0;
+    }
+
+    template <int dim>
+    void FormingSystem<dim>::end_solve()
+    {
+      if (!strategy.needs_system())
+        return;
+      TimerOutput::Scope t(timer, "penalty estimate");
+      strategy.converged(state.contact_set,
+                         state.tools,
+                         contact::SystemView{&body_residual,
+                                             &body_matrix,
+                                             &state.constraints,
+                                             dt},
+                         state.contact_state);
     }
 
     template <int dim>

@@ -65,6 +65,7 @@ namespace formsolve
               if (!r.converged)
                 break;
               state.holder.velocity = system.holder_velocity();
+              system.end_solve();
               // adaptive-strict: solve again while a node is deeper than
               // delta; augmented-lagrangian: update the multipliers, likewise.
               // No update after the last allowed pass: nothing would use it in

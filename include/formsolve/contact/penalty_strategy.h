@@ -45,6 +45,9 @@ namespace formsolve
       virtual bool needs_system() const { return false; }
 
       /// A new Newton solve of a step begins.
+      /// A step begins; its predictor is evaluated next.
+      virtual void begin_step() {}
+
       virtual void begin_solve() {}
 
       /// One factor per pair in @p set (N/mm: nodal force per mm of
@@ -54,6 +57,15 @@ namespace formsolve
                             const SystemView          &system,
                             ContactState              &state,
                             std::vector<double>       &epsilon) = 0;
+
+      /// Called once a solve has converged, with the body system at the
+      /// converged iterate, before finish_solve(): a strategy that holds its
+      /// factors within solves estimates the next solve's here.
+      virtual void converged(const ContactSet<dim> & /*set*/,
+                             const tools::ToolSet<dim> & /*tools*/,
+                             const SystemView & /*system*/,
+                             ContactState & /*state*/)
+      {}
 
       /// Called once a solve has converged. Returns true if the step must be
       /// solved again (same on all ranks); may then update @p state (strict

@@ -17,6 +17,13 @@ namespace formsolve
       projection // eps_k = n.(r_b + K_b dv) / delta, the published form
     };
 
+    enum class FactorUpdate
+    {
+      iteration,     // at every Newton iteration; the predictor keeps the last
+      and_predictor, // at every Newton iteration and at the step's predictor
+      step           // held within a Newton solve, estimated at convergence
+    };
+
     struct Contact
     {
       /// A name registered in contact/penalty_strategy.h; parsed once, into
@@ -28,6 +35,7 @@ namespace formsolve
       double           lower_bound             = 1e-3;    // eps_k dt / K_kk
       double           upper_bound             = 1e4;
       bool             freeze                  = true;
+      FactorUpdate     factor_update           = FactorUpdate::iteration;
       AdaptiveEstimate adaptive_estimate       = AdaptiveEstimate::force;
       double           damping                 = 10;
       double           target_fraction         = 0.9;

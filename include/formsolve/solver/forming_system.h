@@ -38,6 +38,9 @@ namespace formsolve
       /// A Newton solve of the step begins, from the state's velocity and
       /// holder velocity.
       void begin_solve();
+      /// The solve has converged: the strategy sees the body system of the
+      /// converged iterate (contact::PenaltyStrategy::converged).
+      void end_solve();
       /// The step's predictor @p v (the previous step's velocity, holder at
       /// its last velocity), corrected at the contact nodes by Nonlinear
       /// solver/Predictor (contact::keep_contact). Call after begin_step().

@@ -87,6 +87,8 @@ namespace formsolve
         : lower(p.lower_bound)
         , upper(p.upper_bound)
         , freeze(p.freeze)
+        , per_step(p.factor_update == parameters::FactorUpdate::step)
+        , hold_predictor(p.factor_update == parameters::FactorUpdate::iteration)
         , strict(strict)
         , projection(p.adaptive_estimate ==
                      parameters::AdaptiveEstimate::projection)
@@ -95,36 +97,21 @@ namespace formsolve
     {}
 
     template <int dim>
-    void AdaptivePenalty<dim>::estimate(const ContactSet<dim>     &set,
-                                        const tools::ToolSet<dim> &tools,
-                                        const SystemView          &system,
-                                        ContactState              &state,
-                                        std::vector<double>       &epsilon)
+    void AdaptivePenalty<dim>::estimate_at(const ContactSet<dim>     &set,
+                                           const tools::ToolSet<dim> &tools,
+                                           const SystemView          &system,
+                                           const ContactState        &state,
+                                           std::vector<double>       &eps,
+                                           std::vector<double> &stiffness) const
     {
-      Assert(system.residual != nullptr && system.matrix != nullptr,
-             ExcInternalError());
-      Assert(state.size() == set.nodes.size() * tools.size(),
-             ExcInternalError());
       const unsigned int n = set.pairs.size();
-      std::vector<bool>  active(n);
-      for (unsigned int k = 0; k < n; ++k)
-        active[k] = set.pairs[k].active;
-
-      // Freeze only when the active set repeats on every rank: a decision
-      // per rank would make the factors depend on the partition.
-      const MPI_Comm comm = system.residual->get_mpi_communicator();
-      const bool     reuse =
-        Utilities::MPI::min(int(freeze && active == last_active &&
-                                last_epsilon.size() == n),
-                            comm) != 0;
-
       // dv: at active nodes the velocity change that leaves exactly delta of
       // penetration at the end of the step, zero elsewhere (u' of the method).
       const double                  dt = system.dt;
       TrilinosWrappers::MPI::Vector dv(*system.residual), w(*system.residual);
       dv = 0;
       for (unsigned int k = 0; k < n; ++k)
-        if (active[k])
+        if (set.pairs[k].active)
           {
             const auto  &pair  = set.pairs[k];
             const double delta = target * tools.allowed_penetration(pair.tool);
@@ -143,12 +130,8 @@ namespace formsolve
       w += *system.residual;
       system.constraints->set_zero(w);
 
-      epsilon.resize(n);
-      std::vector<double> stiffness_of(n, 0.);
-      min_factor = std::numeric_limits<double>::max();
-      max_factor = 0;
-      max_ratio  = 0;
-      n_active   = 0;
+      eps.resize(n);
+      stiffness.resize(n);
       for (unsigned int k = 0; k < n; ++k)
         {
           const auto &pair  = set.pairs[k];
@@ -161,39 +144,130 @@ namespace formsolve
                       system.matrix->diag_element(dofs[a]);
             }
           // Stiffness in displacement units (N/mm): K_b carries 1/dt.
-          const double stiffness = std::max(K_nn, 0.) / dt;
-          const auto   bounded   = [&](const double e) {
-            return std::clamp(e, lower * stiffness, upper * stiffness);
-          };
-          double eps =
-            bounded(force / (target * tools.allowed_penetration(pair.tool)));
+          stiffness[k] = std::max(K_nn, 0.) / dt;
+          eps[k] =
+            bounded(force / (target * tools.allowed_penetration(pair.tool)),
+                    stiffness[k]);
           // Far from convergence the estimate can jump by orders of magnitude
           // between iterations; let it change by at most a factor 'damping'
           // per estimate, starting from the fixed penalty of the tool.
-          ContactRecord &record = state(pair.node, pair.tool);
-          double        &last   = record.factor;
-          if (last <= 0)
-            last = tools.penalty_factor(pair.tool) * pair.area;
+          const double last = start_factor(set, tools, state, k);
           if (last > 0)
-            eps = std::clamp(eps, last / damping, last * damping);
-          if (!reuse)
-            last = eps;
-          // The strict scale acts within the bounds: Upper bound bounds it.
-          epsilon[k] = reuse ? last_epsilon[k] : bounded(eps * record.scale);
-          stiffness_of[k] = stiffness;
+            eps[k] = std::clamp(eps[k], last / damping, last * damping);
         }
-      if (!reuse)
+    }
+
+    template <int dim>
+    double AdaptivePenalty<dim>::start_factor(const ContactSet<dim>     &set,
+                                              const tools::ToolSet<dim> &tools,
+                                              const ContactState        &state,
+                                              const unsigned int k) const
+    {
+      const auto  &pair = set.pairs[k];
+      const double last = state(pair.node, pair.tool).factor;
+      return last > 0 ? last : tools.penalty_factor(pair.tool) * pair.area;
+    }
+
+    template <int dim>
+    void AdaptivePenalty<dim>::estimate(const ContactSet<dim>     &set,
+                                        const tools::ToolSet<dim> &tools,
+                                        const SystemView          &system,
+                                        ContactState              &state,
+                                        std::vector<double>       &epsilon)
+    {
+      Assert(system.residual != nullptr && system.matrix != nullptr,
+             ExcInternalError());
+      Assert(state.size() == set.nodes.size() * tools.size(),
+             ExcInternalError());
+      const unsigned int n = set.pairs.size();
+      std::vector<bool>  active(n);
+      // Status for the freeze: a pair locked by the chatter guard counts as
+      // unchanged whatever it does, as in Newton's convergence test.
+      std::vector<char> status(n);
+      for (unsigned int k = 0; k < n; ++k)
         {
-          std::vector<bool> is_hanging;
-          interpolate_hanging(set,
-                              *system.constraints,
-                              *system.residual,
-                              is_hanging,
-                              epsilon);
-          for (unsigned int k = 0; k < n; ++k)
-            if (is_hanging[k])
-              state(set.pairs[k].node, set.pairs[k].tool).factor = epsilon[k];
+          active[k] = set.pairs[k].active;
+          status[k] = set.pairs[k].locked ? 2 : char(active[k]);
         }
+
+      // Freeze only when the active set repeats on every rank: a decision
+      // per rank would make the factors depend on the partition.
+      const MPI_Comm comm = system.residual->get_mpi_communicator();
+      const bool     reuse =
+        Utilities::MPI::min(int(freeze && status == last_status &&
+                                last_epsilon.size() == n),
+                            comm) != 0;
+
+      std::vector<double> eps, stiffness_of;
+      epsilon.resize(n);
+      if (per_step && last_epsilon.size() == n)
+        {
+          // Held within the solve: bounds that followed the iterate's
+          // stiffness made Newton cycle between two iterates.
+          epsilon      = last_epsilon;
+          stiffness_of = last_stiffness;
+        }
+      else if (per_step || at_predictor)
+        {
+          // At a step's predictor the body is far from equilibrium (|r|/|f|
+          // about 1) and n.r_b is not the force a node carries: the last
+          // factors are kept there (doc/convergence.md). After a strict
+          // correction within a per-step solve: the forces of this iterate
+          // (|r|/|f| <= Strict check residual) first.
+          if (refresh)
+            record_estimate(set, tools, system, state);
+          refresh = false;
+          // The last converged solve's estimate (or the fixed penalty), times
+          // the strict scale, within the bounds at the solve's first iterate.
+          stiffness_of.resize(n);
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              const auto &pair = set.pairs[k];
+              double      K_nn = 0;
+              for (unsigned int a = 0; a < dim; ++a)
+                K_nn +=
+                  pair.normal[a] * pair.normal[a] *
+                  system.matrix->diag_element(set.nodes[pair.node].dofs[a]);
+              stiffness_of[k] = std::max(K_nn, 0.) / system.dt;
+              epsilon[k]      = bounded(start_factor(set, tools, state, k) *
+                                     state(pair.node, pair.tool).scale,
+                                   stiffness_of[k]);
+            }
+        }
+      else
+        {
+          estimate_at(set, tools, system, state, eps, stiffness_of);
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              ContactRecord &record =
+                state(set.pairs[k].node, set.pairs[k].tool);
+              if (!reuse)
+                record.factor = eps[k];
+              else if (record.factor <= 0)
+                record.factor = start_factor(set, tools, state, k);
+              // The strict scale acts within the bounds: Upper bound bounds it.
+              epsilon[k] = reuse
+                             ? last_epsilon[k]
+                             : bounded(eps[k] * record.scale, stiffness_of[k]);
+            }
+          if (!reuse)
+            {
+              std::vector<bool> is_hanging;
+              interpolate_hanging(set,
+                                  *system.constraints,
+                                  *system.residual,
+                                  is_hanging,
+                                  epsilon);
+              for (unsigned int k = 0; k < n; ++k)
+                if (is_hanging[k])
+                  state(set.pairs[k].node, set.pairs[k].tool).factor =
+                    epsilon[k];
+            }
+        }
+      min_factor = std::numeric_limits<double>::max();
+      max_factor = 0;
+      max_ratio  = 0;
+      n_active   = 0;
       for (unsigned int k = 0; k < n; ++k)
         if (active[k])
           {
@@ -209,8 +283,42 @@ namespace formsolve
       n_active   = Utilities::MPI::sum(n_active, comm);
       if (n_active == 0)
         min_factor = 0;
-      last_active  = active;
-      last_epsilon = epsilon;
+      at_predictor   = false;
+      last_status    = status;
+      last_epsilon   = epsilon;
+      last_stiffness = stiffness_of;
+    }
+
+    template <int dim>
+    void AdaptivePenalty<dim>::converged(const ContactSet<dim>     &set,
+                                         const tools::ToolSet<dim> &tools,
+                                         const SystemView          &system,
+                                         ContactState              &state)
+    {
+      if (per_step)
+        record_estimate(set, tools, system, state);
+    }
+
+    template <int dim>
+    void AdaptivePenalty<dim>::record_estimate(const ContactSet<dim>     &set,
+                                               const tools::ToolSet<dim> &tools,
+                                               const SystemView &system,
+                                               ContactState     &state) const
+    {
+      // At convergence n.r_b is the force each active node carries: the
+      // estimate for the next solve. Open pairs keep what they had, so a
+      // node that lifts off and lands again starts from its last factor.
+      std::vector<double> eps, stiffness;
+      estimate_at(set, tools, system, state, eps, stiffness);
+      std::vector<bool> is_hanging;
+      interpolate_hanging(set,
+                          *system.constraints,
+                          *system.residual,
+                          is_hanging,
+                          eps);
+      for (unsigned int k = 0; k < set.pairs.size(); ++k)
+        if (set.pairs[k].active)
+          state(set.pairs[k].node, set.pairs[k].tool).factor = eps[k];
     }
 
     template <int dim>
@@ -256,7 +364,9 @@ namespace formsolve
                                        ContactState              &state,
                                        const MPI_Comm             comm)
     {
-      return strict && check_bound(set, tools, state, comm, false);
+      const bool again = strict && check_bound(set, tools, state, comm, false);
+      refresh          = again && per_step;
+      return again;
     }
 
     template <int dim>

@@ -10,6 +10,8 @@
 
 #include <formsolve/contact/penalty_strategy.h>
 
+#include <algorithm>
+
 namespace formsolve
 {
   namespace contact
@@ -21,12 +23,17 @@ namespace formsolve
       AdaptivePenalty(const parameters::Contact &p, const bool strict);
 
       bool        needs_system() const override { return true; }
+      void        begin_step() override { at_predictor = hold_predictor; }
       void        begin_solve() override { last_epsilon.clear(); }
       void        estimate(const ContactSet<dim>     &set,
                            const tools::ToolSet<dim> &tools,
                            const SystemView          &system,
                            ContactState              &state,
                            std::vector<double>       &epsilon) override;
+      void        converged(const ContactSet<dim>     &set,
+                            const tools::ToolSet<dim> &tools,
+                            const SystemView          &system,
+                            ContactState              &state) override;
       bool        finish_solve(const ContactSet<dim>     &set,
                                const tools::ToolSet<dim> &tools,
                                ContactState              &state,
@@ -47,6 +54,29 @@ namespace formsolve
       unsigned int n_active = 0;
 
     private:
+      /// The damped estimate of every pair at the iterate of @p system
+      /// (writes nothing), and the pairs' normal stiffness (N/mm).
+      void estimate_at(const ContactSet<dim>     &set,
+                       const tools::ToolSet<dim> &tools,
+                       const SystemView          &system,
+                       const ContactState        &state,
+                       std::vector<double>       &eps,
+                       std::vector<double>       &stiffness) const;
+      /// per_step: the estimate at @p system's iterate into the records of
+      /// the active pairs.
+      void record_estimate(const ContactSet<dim>     &set,
+                           const tools::ToolSet<dim> &tools,
+                           const SystemView          &system,
+                           ContactState              &state) const;
+      /// Pair @p k's last factor, or the tool's fixed penalty for a new one.
+      double start_factor(const ContactSet<dim>     &set,
+                          const tools::ToolSet<dim> &tools,
+                          const ContactState        &state,
+                          const unsigned int         k) const;
+      double bounded(const double eps, const double stiffness) const
+      {
+        return std::clamp(eps, lower * stiffness, upper * stiffness);
+      }
       /// The strict check: scale up the nodes deeper than delta; with
       /// @p relax also scale back those well inside it. True if any was
       /// deeper (on any rank).
@@ -56,14 +86,17 @@ namespace formsolve
                          const MPI_Comm             comm,
                          const bool                 relax) const;
       double lower, upper;
-      bool   freeze, strict;
-      bool   projection; // the published estimate with K_b dv
-      double damping;    // max change factor per estimate
-      double target;     // aim at this fraction of delta
+      bool   freeze, per_step, hold_predictor, strict;
+      bool   refresh      = false; // per_step: estimate at the next iterate
+      bool   at_predictor = false; // the next estimate is a step's first //
+                                   // per_step: estimate at the next iterate
+      bool   projection;           // the published estimate with K_b dv
+      double damping;              // max change factor per estimate
+      double target;               // aim at this fraction of delta
       /// Within one solve: the active set and factors of the last estimate
       /// (factors are frozen once the active set repeats).
-      std::vector<bool>   last_active;
-      std::vector<double> last_epsilon;
+      std::vector<char>   last_status; // 0 open, 1 active, 2 locked
+      std::vector<double> last_epsilon, last_stiffness;
     };
   } // namespace contact
 } // namespace formsolve

@@ -18,6 +18,7 @@ namespace formsolve
       explicit AugmentedLagrangian(std::unique_ptr<PenaltyStrategy<dim>> inner);
 
       bool needs_system() const override { return inner->needs_system(); }
+      void begin_step() override { inner->begin_step(); }
       void begin_solve() override { inner->begin_solve(); }
       void estimate(const ContactSet<dim>     &set,
                     const tools::ToolSet<dim> &tools,
@@ -26,6 +27,13 @@ namespace formsolve
                     std::vector<double>       &epsilon) override
       {
         inner->estimate(set, tools, system, state, epsilon);
+      }
+      void converged(const ContactSet<dim>     &set,
+                     const tools::ToolSet<dim> &tools,
+                     const SystemView          &system,
+                     ContactState              &state) override
+      {
+        inner->converged(set, tools, system, state);
       }
       bool        finish_solve(const ContactSet<dim>     &set,
                                const tools::ToolSet<dim> &tools,

@@ -1,0 +1,149 @@
+// When the adaptive factors are estimated (Contact/Factor update), on the
+// 1-D spring of adaptive_penalty_spring: a node carrying the force F has the
+// estimate F/delta. Checked:
+// - iteration: a step's predictor keeps the record; the next iterate is
+//   estimated; 'iteration and predictor' estimates at the predictor too;
+// - step: held through a solve whatever the residual; converged() writes the
+//   next solve's factor;
+// - freeze: a pair locked by the chatter guard that flips does not restart
+//   the estimates.
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <formsolve/contact/strategies/adaptive.h>
+
+#include "check.h"
+
+using namespace dealii;
+using namespace formsolve;
+
+namespace
+{
+  const double k = 100, delta = 1e-3, dt = 0.25;
+
+  struct Spring
+  {
+    IndexSet                       all{3};
+    TrilinosWrappers::SparseMatrix K;
+    TrilinosWrappers::MPI::Vector  r;
+    AffineConstraints<double>      constraints;
+    contact::ContactSet<3>         set;
+
+    Spring()
+    {
+      all.add_range(0, 3);
+      DynamicSparsityPattern dsp(3, 3);
+      for (unsigned int i = 0; i < 3; ++i)
+        dsp.add(i, i);
+      K.reinit(all, all, dsp, MPI_COMM_WORLD);
+      K.set(0, 0, k * dt);
+      K.set(1, 1, 1.);
+      K.set(2, 2, 1.);
+      K.compress(VectorOperation::insert);
+      constraints.close();
+      r.reinit(all, MPI_COMM_WORLD);
+      set.nodes.resize(1);
+      set.nodes[0].dofs = {{0, 1, 2}};
+      contact::ContactPair<3> pair;
+      pair.node = 0, pair.tool = 0, pair.area = 1;
+      pair.normal[0]     = -1;
+      pair.predicted_gap = -delta;
+      pair.active        = true;
+      set.pairs.push_back(pair);
+    }
+
+    /// The node carries @p force (N) along the tool normal: n.r_b = force,
+    /// n = -e_x.
+    contact::SystemView carry(const double force)
+    {
+      r[0] = -force;
+      r.compress(VectorOperation::insert);
+      return contact::SystemView{&r, &K, &constraints, dt};
+    }
+  };
+} // namespace
+
+int main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+
+  parameters::Tools tool_prm;
+  tool_prm.punch.shape                = parameters::ToolShape::flat;
+  tool_prm.punch.friction_coefficient = 0;
+  tool_prm.punch.allowed_penetration  = delta;
+  tool_prm.die.enabled                = false;
+  tool_prm.blank_holder.enabled       = false;
+  parameters::Contact prm;
+  prm.penalty_factor      = 1;
+  prm.allowed_penetration = delta;
+  prm.lower_bound         = 1e-6;
+  prm.upper_bound         = 1e6;
+  prm.freeze              = false;
+  prm.damping             = 1e300;
+  prm.target_fraction     = 1;
+  const tools::ToolSet<3> tools(tool_prm, prm, 1.);
+  const double            record = 2e5; // N/mm, from an earlier solve
+
+  using parameters::FactorUpdate;
+  for (const auto update : {FactorUpdate::iteration,
+                            FactorUpdate::and_predictor,
+                            FactorUpdate::step})
+    {
+      const std::string name = update == FactorUpdate::iteration ? "iteration"
+                               : update == FactorUpdate::step
+                                 ? "step"
+                                 : "iteration and predictor";
+      prm.factor_update      = update;
+      Spring                      s;
+      contact::AdaptivePenalty<3> adaptive(prm, false);
+      contact::ContactState       state;
+      state.reset(1, tools.size());
+      state(0, 0).factor = record;
+      std::vector<double> eps;
+
+      adaptive.begin_step();
+      adaptive.begin_solve();
+      adaptive.estimate(s.set, tools, s.carry(500), state, eps);
+      test::close(name + ": at the predictor (N/mm)",
+                  eps[0],
+                  update == FactorUpdate::and_predictor ? 500 / delta : record,
+                  1e-6);
+      adaptive.estimate(s.set, tools, s.carry(300), state, eps);
+      test::close(name + ": at the next iterate (N/mm)",
+                  eps[0],
+                  update == FactorUpdate::step ? record : 300 / delta,
+                  1e-6);
+      adaptive.converged(s.set, tools, s.carry(400), state);
+      adaptive.begin_solve();
+      adaptive.estimate(s.set, tools, s.carry(100), state, eps);
+      test::close(name + ": next solve's first iterate (N/mm)",
+                  eps[0],
+                  update == FactorUpdate::step ? 400 / delta : 100 / delta,
+                  1e-6);
+    }
+
+  // Freeze: the pair is locked and flips (active -> open) between two
+  // estimates; the factors must stay those of the first.
+  {
+    prm.factor_update = FactorUpdate::iteration;
+    prm.freeze        = true;
+    Spring                      s;
+    contact::AdaptivePenalty<3> adaptive(prm, false);
+    contact::ContactState       state;
+    state.reset(1, tools.size());
+    std::vector<double> eps;
+    adaptive.begin_solve();
+    adaptive.estimate(s.set, tools, s.carry(500), state, eps); // unlocked
+    adaptive.estimate(s.set, tools, s.carry(300), state, eps);
+    s.set.pairs[0].locked = true;
+    adaptive.estimate(s.set, tools, s.carry(200), state, eps);
+    const double first_locked = eps[0];
+    s.set.pairs[0].active     = false;
+    adaptive.estimate(s.set, tools, s.carry(100), state, eps);
+    test::close("locked pair flipped: factor frozen (N/mm)",
+                eps[0],
+                first_locked,
+                1e-6);
+  }
+  return test::result();
+}
