@@ -83,7 +83,9 @@ namespace formsolve
         "true",
         Bool(),
         "Adaptive: stop updating the factors in a step once the "
-        "contact set is unchanged between two iterations.");
+        "contact set is unchanged between two iterations (a pair locked "
+        "by 'Max status flips' counts as unchanged while locked). No "
+        "effect with 'Factor update = step'.");
       prm.declare_entry(
         "Factor update",
         "iteration",
@@ -92,8 +94,7 @@ namespace formsolve
         "Newton iteration from the current system (until 'Freeze factors' "
         "stops them); at a step's predictor, where the body is far from "
         "equilibrium, the last factors are kept. iteration and predictor: "
-        "at the predictor too (formsolve's behaviour before this entry "
-        "existed). step: each "
+        "at the predictor too. step: each "
         "Newton solve keeps the factors the last converged solve estimated "
         "(pairs without one start from 'Penalty factor'); the estimate runs "
         "at convergence, for the next solve, and at adaptive-strict's "

@@ -81,10 +81,10 @@ namespace formsolve
       // linearisation point lies in another configuration (and a resumed run
       // must iterate as the uninterrupted one).
       dual.reset();
-      strategy.begin_step();
-      hold_holder     = true;
-      step_max_linear = 0;
-      step_condition  = 0;
+      predictor_iterate = true;
+      hold_holder       = true;
+      step_max_linear   = 0;
+      step_condition    = 0;
     }
 
     template <int dim>
@@ -226,7 +226,11 @@ namespace formsolve
       TimerOutput::Scope t(timer, "penalty estimate");
       strategy.estimate(state.contact_set,
                         state.tools,
-                        contact::SystemView{&r_b, &K_b, &state.constraints, dt},
+                        contact::SystemView{&r_b,
+                                            &K_b,
+                                            &state.constraints,
+                                            dt,
+                                            predictor_iterate},
                         state.contact_state,
                         epsilon);
     }
@@ -262,6 +266,8 @@ namespace formsolve
       if (!strategy.needs_system())
         return -1;
       estimate_penalty(body_residual, body_matrix);
+      // Newton estimates here once per accepted iterate, the predictor first.
+      predictor_iterate = false;
       matrix.copy_from(body_matrix);
       residual = body_residual;
       // The copy leaves the vector in 'insert' mode; settle it on every rank

@@ -32,6 +32,9 @@ namespace formsolve
       const dealii::TrilinosWrappers::SparseMatrix *matrix      = nullptr;
       const dealii::AffineConstraints<double>      *constraints = nullptr;
       double                                        dt          = 0;
+      /// The iterate is a step's predictor (the previous velocity in the new
+      /// configuration), not yet a Newton iterate. The same on all ranks.
+      bool predictor = false;
     };
 
     template <int dim>
@@ -45,9 +48,6 @@ namespace formsolve
       virtual bool needs_system() const { return false; }
 
       /// A new Newton solve of a step begins.
-      /// A step begins; its predictor is evaluated next.
-      virtual void begin_step() {}
-
       virtual void begin_solve() {}
 
       /// One factor per pair in @p set (N/mm: nodal force per mm of

@@ -128,6 +128,7 @@ namespace formsolve
       const bool                    use_dual;
       bool                          exact_tangent = false; // assemble_exact()
       bool hold_holder = false; // dw = 0 in the first correction of a step
+      bool predictor_iterate = false; // the step's predictor not yet accepted
       HolderCoupling<dim> holder;
       double w_accepted = 0, w_trial = 0, dw = 0; // holder velocity (mm/s)
 

@@ -200,14 +200,15 @@ namespace formsolve
 
       std::vector<double> eps, stiffness_of;
       epsilon.resize(n);
-      if (per_step && last_epsilon.size() == n)
+      // Both decisions are the same on every rank (collective calls below).
+      if (per_step && held)
         {
           // Held within the solve: bounds that followed the iterate's
           // stiffness made Newton cycle between two iterates.
           epsilon      = last_epsilon;
           stiffness_of = last_stiffness;
         }
-      else if (per_step || at_predictor)
+      else if (per_step || (hold_predictor && system.predictor))
         {
           // At a step's predictor the body is far from equilibrium (|r|/|f|
           // about 1) and n.r_b is not the force a node carries: the last
@@ -217,6 +218,7 @@ namespace formsolve
           if (refresh)
             record_estimate(set, tools, system, state);
           refresh = false;
+          held    = per_step;
           // The last converged solve's estimate (or the fixed penalty), times
           // the strict scale, within the bounds at the solve's first iterate.
           stiffness_of.resize(n);
@@ -283,7 +285,6 @@ namespace formsolve
       n_active   = Utilities::MPI::sum(n_active, comm);
       if (n_active == 0)
         min_factor = 0;
-      at_predictor   = false;
       last_status    = status;
       last_epsilon   = epsilon;
       last_stiffness = stiffness_of;

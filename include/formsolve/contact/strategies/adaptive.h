@@ -22,9 +22,12 @@ namespace formsolve
     public:
       AdaptivePenalty(const parameters::Contact &p, const bool strict);
 
-      bool        needs_system() const override { return true; }
-      void        begin_step() override { at_predictor = hold_predictor; }
-      void        begin_solve() override { last_epsilon.clear(); }
+      bool needs_system() const override { return true; }
+      void begin_solve() override
+      {
+        last_epsilon.clear();
+        held = false;
+      }
       void        estimate(const ContactSet<dim>     &set,
                            const tools::ToolSet<dim> &tools,
                            const SystemView          &system,
@@ -87,14 +90,13 @@ namespace formsolve
                          const bool                 relax) const;
       double lower, upper;
       bool   freeze, per_step, hold_predictor, strict;
-      bool   refresh      = false; // per_step: estimate at the next iterate
-      bool   at_predictor = false; // the next estimate is a step's first //
-                                   // per_step: estimate at the next iterate
-      bool   projection;           // the published estimate with K_b dv
-      double damping;              // max change factor per estimate
-      double target;               // aim at this fraction of delta
-      /// Within one solve: the active set and factors of the last estimate
-      /// (factors are frozen once the active set repeats).
+      bool   refresh = false; // per_step: estimate at the next iterate
+      bool   held    = false; // per_step: this solve's factors are set
+      bool   projection;      // the published estimate with K_b dv
+      double damping;         // max change factor per estimate
+      double target;          // aim at this fraction of delta
+      /// Within one solve: the pairs' status and factors of the last
+      /// estimate (factors are frozen once the status repeats).
       std::vector<char>   last_status; // 0 open, 1 active, 2 locked
       std::vector<double> last_epsilon, last_stiffness;
     };

@@ -18,7 +18,6 @@ namespace formsolve
       explicit AugmentedLagrangian(std::unique_ptr<PenaltyStrategy<dim>> inner);
 
       bool needs_system() const override { return inner->needs_system(); }
-      void begin_step() override { inner->begin_step(); }
       void begin_solve() override { inner->begin_solve(); }
       void estimate(const ContactSet<dim>     &set,
                     const tools::ToolSet<dim> &tools,
