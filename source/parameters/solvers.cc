@@ -174,11 +174,13 @@ namespace formsolve
         "When the line search fails twice in a row (the second time along "
         "the exact tangent's direction, doc/theory.md section 8), do three "
         "direct (secant) iterations, then return to Newton.");
-      prm.declare_entry("Log iterations",
-                        "false",
-                        Bool(),
-                        "Print one line per nonlinear iteration: residual, "
-                        "correction, line-search factor, contact-set changes.");
+      prm.declare_entry(
+        "Log iterations",
+        "false",
+        Bool(),
+        "Print one line per nonlinear iteration: residual, "
+        "correction, line-search factor, contact-set changes with the "
+        "pairs each tool closed (+) and opened (-).");
       prm.leave_subsection();
     }
 

@@ -60,6 +60,7 @@ namespace formsolve
       holder.reinit(state.owned, state.comm);
       epsilon.clear();
       last_active.clear();
+      last_record_status.clear(); // new surface nodes
       dual.reinit(state.dof_handler.get_triangulation().n_active_cells(),
                   assembler.quadrature().size());
 
@@ -392,7 +393,37 @@ namespace formsolve
         active[k] = pairs[k].active || pairs[k].locked;
       const int changed = (active != last_active);
       last_active       = active;
+      if (prm.nonlinear.log_iterations)
+        count_changes();
       return Utilities::MPI::max(changed, state.comm) != 0;
+    }
+
+    template <int dim>
+    void FormingSystem<dim>::count_changes()
+    {
+      // By record (node, tool), not by pair index: pairs enter and leave the
+      // search distance between searches.
+      const unsigned int n_tools = state.tools.size();
+      std::vector<char>  status(state.contact_state.size(), 0);
+      for (const auto &pair : state.contact_set.pairs)
+        status[pair.node * n_tools + pair.tool] = pair.active || pair.locked;
+      closed.assign(n_tools, 0);
+      opened.assign(n_tools, 0);
+      if (last_record_status.size() == status.size())
+        for (unsigned int i = 0; i < status.size(); ++i)
+          if (status[i] != last_record_status[i])
+            ++(status[i] ? closed : opened)[i % n_tools];
+      last_record_status = status;
+      for (auto *counts : {&closed, &opened})
+        {
+          const int ierr = MPI_Allreduce(MPI_IN_PLACE,
+                                         counts->data(),
+                                         n_tools,
+                                         MPI_UNSIGNED,
+                                         MPI_SUM,
+                                         state.comm);
+          AssertThrowMPI(ierr);
+        }
     }
 
     template <int dim>
@@ -400,6 +431,15 @@ namespace formsolve
     {
       std::ostringstream s;
       s << strategy.summary();
+      // Pairs closed (+) and opened (-) per tool since the last search.
+      std::string changes;
+      for (unsigned int t = 0; t < closed.size(); ++t)
+        if (closed[t] + opened[t] > 0)
+          changes += (changes.empty() ? "" : ", ") + state.tools.key(t) + " +" +
+                     std::to_string(closed[t]) + "/-" +
+                     std::to_string(opened[t]);
+      if (!changes.empty())
+        s << "  pairs: " << changes;
       if (holder_controlled())
         s << "  holder: w=" << w_accepted
           << " mm/s, F-F_set=" << -holder.residual() << " N";

@@ -107,6 +107,9 @@ namespace formsolve
       /// Contact forces and stiffness with the current factors added to the
       /// matrix and residual; holder coupling terms.
       void add_contact_terms(const bool with_matrix = true);
+      /// For the iteration log: pairs closed and opened per tool since the
+      /// last search (closed, opened; summed over ranks).
+      void count_changes();
       bool holder_controlled() const { return state.holder.force_control; }
 
       const parameters::Run         &prm;
@@ -119,10 +122,14 @@ namespace formsolve
       MatrixType matrix;
       /// Body system (no contact) of the last assembly, kept for penalty
       /// estimates at accepted iterates.
-      MatrixType                    body_matrix;
-      VectorType                    residual, body_residual;
-      std::vector<double>           epsilon;
-      std::vector<bool>             last_active;
+      MatrixType          body_matrix;
+      VectorType          residual, body_residual;
+      std::vector<double> epsilon;
+      std::vector<bool>   last_active;
+      /// Logging only: the status per contact record (node, tool) at the
+      /// last search, and the pairs each tool closed/opened since then.
+      std::vector<char>             last_record_status;
+      std::vector<unsigned int>     closed, opened;
       std::unique_ptr<LinearSolver> linear_solver;
       DualStress                    dual;
       const bool                    use_dual;
