@@ -7,8 +7,10 @@
 # Per run: the steps grouped by the last iteration that changed the contact
 # set, with their mean iterations, and the pairs changed per tool in
 # iteration 1 and in iterations 2 and later.
+# QUARTER_LEVELS="4 5" adds the quarter at those planform levels (4 layers,
+# adaptive-strict only) to the table.
 # Writes doc/contact-changes.csv and prints the tables of doc/convergence.md.
-# Usage: bash benchmarks/contact_changes.sh [--force]
+# Usage: [QUARTER_LEVELS="4 5"] bash benchmarks/contact_changes.sh [--force]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=${FORMSOLVE_EXE:-$root/build/formsolve}
@@ -17,32 +19,35 @@ out=$root/results/contact-changes
 mkdir -p "$out"
 FORCE=${1:-}
 export OMP_NUM_THREADS=1
-quarter=(--set "Geometry/Model=quarter" --set "Mesh refinement/Interval=0"
-  --set "Mesh/Layers through thickness=4" --set "Mesh/Planform refinements=3")
-for model in axisymmetric quarter; do
-  for strategy in fixed adaptive-strict; do
-    name=$model-$strategy
+levels=${QUARTER_LEVELS:-}
+runs=(axisymmetric-fixed axisymmetric-adaptive-strict quarter-fixed quarter-adaptive-strict)
+for level in $levels; do runs+=("quarter$level-adaptive-strict"); done
+for name in "${runs[@]}"; do
+    model=${name%%-*} strategy=${name#*-}
     [ "$FORCE" != --force ] && [ -f "$out/$name/run-summary.txt" ] && continue
     echo "== $name" >&2
     sets=()
-    [ "$model" = quarter ] && sets=("${quarter[@]}")
+    if [ "$model" != axisymmetric ]; then
+      level=${model#quarter}
+      sets=(--set "Geometry/Model=quarter" --set "Mesh refinement/Interval=0"
+        --set "Mesh/Layers through thickness=4" --set "Mesh/Planform refinements=${level:-3}")
+    fi
     (cd "$root/prm" && "$exe" cup-drawing.prm ${sets[@]+"${sets[@]}"} \
       --set "Contact/Penalty strategy=$strategy" \
       --set "Nonlinear solver/Log iterations=true" \
       --set "Output/Output interval=0" --set "Output/Revolved copy=false" \
       --set "Output/Output directory=$out/$name") > "$out/$name.log" 2>&1 ||
       { tail -3 "$out/$name.log"; exit 1; }
-  done
 done
-/usr/bin/python3 - "$out" "$root/doc/contact-changes.csv" <<'PY'
+/usr/bin/python3 - "$out" "$root/doc/contact-changes.csv" "${runs[@]}" <<'PY'
 import collections, csv, re, sys
-out, csv_path = sys.argv[1:3]
+out, csv_path, runs = sys.argv[1], sys.argv[2], sys.argv[3:]
 tools = ["punch", "die", "blank_holder"]
 rows = []
-for model in ["axisymmetric", "quarter"]:
-    for strategy in ["fixed", "adaptive-strict"]:
+for run in runs:
+        model, strategy = run.split("-", 1)
         steps, current = [], []  # per step: (iteration, {tool: changes})
-        for line in open(f"{out}/{model}-{strategy}.log"):
+        for line in open(f"{out}/{run}.log"):
             if line.startswith("step "):
                 steps.append(current)
                 current = []
@@ -64,7 +69,9 @@ for model in ["axisymmetric", "quarter"]:
                 for t, n in c.items():
                     if i > 0:
                         pairs[(t, i > 1)] += n
-        row = dict(model=model, strategy=strategy, steps=len(steps),
+        dofs = re.search(r"(\d+) DoFs", open(f"{out}/{run}.log").readline())
+        row = dict(model=model, strategy=strategy, dofs=int(dofs.group(1)),
+                   steps=len(steps),
                    iterations=sum(max(i for i, _ in s) for s in steps))
         for g in range(5):
             its = groups.get(g, [])
@@ -79,12 +86,12 @@ with open(csv_path, "w", newline="") as f:
     w = csv.DictWriter(f, fieldnames=list(rows[0]))
     w.writeheader()
     w.writerows(rows)
-print("| run | iterations/step | steps by the last iteration that changed the set: none / 1 / 2 / 3 / ≥ 4 | their mean iterations | pairs changed in iteration 1: punch / die / holder | in iterations ≥ 2 |")
-print("|---|---|---|---|---|---|")
+print("| run | DoFs | iterations/step | steps by the last iteration that changed the set: none / 1 / 2 / 3 / ≥ 4 | their mean iterations | pairs changed in iteration 1: punch / die / holder | in iterations ≥ 2 |")
+print("|---|---|---|---|---|---|---|")
 for r in rows:
     counts = " / ".join(str(r[f"steps_last_change_{g}"]) for g in range(5))
     means = " / ".join(str(r[f"mean_iterations_last_change_{g}"] or "–") for g in range(5))
     it1 = " / ".join(str(r[f"{t}_changes_it1"]) for t in tools)
     late = " / ".join(str(r[f"{t}_changes_it2plus"]) for t in tools)
-    print(f"| {r['model']}-{r['strategy']} | {r['iterations'] / r['steps']:.2f} | {counts} | {means} | {it1} | {late} |")
+    print(f"| {r['model']}-{r['strategy']} | {r['dofs']} | {r['iterations'] / r['steps']:.2f} | {counts} | {means} | {it1} | {late} |")
 PY

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The full draw of the quarter 3-D cup at 262k DoFs (planform level 6, 6
+# layers), 2 ranks, single-precision factors reused as GMRES's
+# preconditioner (Reuse tolerance 1e-6); everything else the default case.
+# Needs both cores for about 1.5-2 h. Writes results/full-draw-262k/run/,
+# run.log and time.txt (/usr/bin/time -v); doc/performance.md reports it.
+# Usage: bash benchmarks/full_draw_262k.sh
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+exe=${FORMSOLVE_EXE:-$root/build/formsolve}
+[ -x "$exe" ] || bash "$root/scripts/build.sh"
+out=$root/results/full-draw-262k
+mkdir -p "$out"
+export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+git -C "$root" rev-parse --short HEAD > "$out/commit"
+cd "$root/prm"
+/usr/bin/time -v mpirun -np 2 "$exe" cup-drawing.prm \
+  --set "Geometry/Model=quarter" --set "Mesh refinement/Interval=0" \
+  --set "Mesh/Layers through thickness=6" --set "Mesh/Planform refinements=6" \
+  --set "Output/Output directory=$out/run" --set "Output/Revolved copy=false" \
+  --set "Linear solver/Factor precision=single" \
+  --set "Linear solver/Reuse tolerance=1e-6" > "$out/run.log" 2> "$out/time.txt"
+grep "^done" "$out/run.log"
+grep -E "Elapsed|Maximum resident" "$out/time.txt"
