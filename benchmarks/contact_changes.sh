@@ -62,7 +62,9 @@ for run in runs:
         groups = collections.defaultdict(list)
         pairs = {(t, late): 0 for t in tools for late in (False, True)}
         for s in steps:
-            iterations = max(i for i, _ in s)
+            # Every Newton iteration of the step, re-solve passes included
+            # (each pass counts from 1 again).
+            iterations = sum(i > 0 for i, _ in s)
             last = max([i for i, c in s if c and i > 0] + [0])
             groups[min(last, 4)].append(iterations)
             for i, c in s:
@@ -72,7 +74,9 @@ for run in runs:
         dofs = re.search(r"(\d+) DoFs", open(f"{out}/{run}.log").readline())
         row = dict(model=model, strategy=strategy, dofs=int(dofs.group(1)),
                    steps=len(steps),
-                   iterations=sum(max(i for i, _ in s) for s in steps))
+                   iterations=sum(sum(i > 0 for i, _ in s) for s in steps))
+        history = list(csv.DictReader(open(f"{out}/{run}/history.csv")))
+        assert row["iterations"] == sum(int(h["newton_iterations"]) for h in history), run
         for g in range(5):
             its = groups.get(g, [])
             row[f"steps_last_change_{g}"] = len(its)
