@@ -329,6 +329,18 @@ namespace formsolve
         "when the sparsity pattern changed, factorise afresh. 0: a fresh "
         "factorisation for every matrix.");
       prm.declare_entry(
+        "Reuse velocity change",
+        "0",
+        Double(0),
+        "Reuse factorisation iterations > 0: try the last factors on a new "
+        "matrix only if both belong to the same Newton solve and the "
+        "velocities they were assembled at differ by at most this fraction, "
+        "|v - v_f| <= value |v| (-); otherwise factorise at once. Early "
+        "iterations of a step change the tangent too much for GMRES to "
+        "converge on old factors, and each such failed attempt costs Reuse "
+        "factorisation iterations substitutions (doc/performance.md). 0: "
+        "always try, also across solves and steps.");
+      prm.declare_entry(
         "Reuse tolerance",
         "1e-10",
         Double(0),
@@ -415,6 +427,7 @@ namespace formsolve
       condition_iterations  = prm.get_integer("Condition estimate iterations");
       reuse_iterations      = prm.get_integer("Reuse factorisation iterations");
       reuse_tolerance       = prm.get_double("Reuse tolerance");
+      reuse_velocity_change = prm.get_double("Reuse velocity change");
       low_rank_tolerance    = prm.get_double("Low-rank tolerance");
       low_rank_iterations   = prm.get_integer("Low-rank iterations");
       out_of_core_directory = prm.get("Out-of-core directory");

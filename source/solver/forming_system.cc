@@ -30,6 +30,7 @@ namespace formsolve
         , strategy(strategy)
         , timer(timer)
         , search(prm.contact.search_distance)
+        , factor_reuse(prm.linear.reuse_velocity_change)
         , use_dual(prm.nonlinear.tangent ==
                    parameters::Tangent::stress_velocity)
     {}
@@ -57,6 +58,7 @@ namespace formsolve
         body_matrix.reinit(matrix);
       residual.reinit(state.owned, state.comm);
       body_residual.reinit(state.owned, state.comm);
+      factor_reuse.reinit(state.owned, state.comm);
       holder.reinit(state.owned, state.comm);
       epsilon.clear();
       last_active.clear();
@@ -93,6 +95,7 @@ namespace formsolve
     {
       state.contact_state.begin_solve();
       strategy.begin_solve();
+      factor_reuse.begin_solve();
       w_accepted = w_trial = state.holder.velocity;
       dw                   = 0;
     }
@@ -216,6 +219,8 @@ namespace formsolve
       if (estimate)
         estimate_penalty(residual, matrix);
       last_newton = newton;
+      if (with_matrix)
+        factor_reuse.assembled_at(v);
       add_contact_terms(with_matrix);
       return residual.l2_norm();
     }
@@ -305,8 +310,9 @@ namespace formsolve
             : static_cast<const Mapping<dim> &>(state.reference_mapping),
           state.dof_handler,
           state.owned));
-      unsigned int its = linear_solver->solve(matrix, dv, rhs);
-      dw               = 0;
+      unsigned int its =
+        linear_solver->solve(matrix, dv, rhs, factor_reuse.may_reuse());
+      dw = 0;
       if (holder_controlled())
         {
           if (holder.engaged())
@@ -329,6 +335,8 @@ namespace formsolve
                                            dt);
         }
       hold_holder = false;
+      if (linear_solver->factorisations() != factorised)
+        factor_reuse.factorised();
       n_factorisations += linear_solver->factorisations() - factorised;
       step_max_linear = std::max(step_max_linear, its);
       step_condition =

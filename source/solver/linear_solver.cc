@@ -89,9 +89,11 @@ namespace formsolve
 
     unsigned int LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
                                      TrilinosWrappers::MPI::Vector        &x,
-                                     const TrilinosWrappers::MPI::Vector  &b)
+                                     const TrilinosWrappers::MPI::Vector  &b,
+                                     const bool may_reuse)
     {
       estimate_condition(A, b);
+      try_reuse   = may_reuse;
       last_matrix = &A;
       last_direct = prm.type == parameters::LinearSolverType::direct;
       if (last_direct)
@@ -108,7 +110,8 @@ namespace formsolve
       auto      &matrix = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
       const bool same_pattern = factorised_matrix == &matrix &&
                                 factorised_nnz == A.n_nonzero_elements();
-      if (same_pattern && n_factorisations > 0 && prm.reuse_iterations > 0)
+      if (same_pattern && n_factorisations > 0 && prm.reuse_iterations > 0 &&
+          try_reuse)
         {
           unsigned int its = 0;
           if (gmres_with_factors(A, x, b, prm.reuse_iterations, its))
@@ -116,8 +119,21 @@ namespace formsolve
               factors_current = false;
               return its;
             }
+          // The failed iterations count: they were paid for.
           x = 0;
+          return prm.reuse_iterations + factorise_new(A, x, b);
         }
+      return factorise_new(A, x, b);
+    }
+
+    unsigned int
+    LinearSolver::factorise_new(const TrilinosWrappers::SparseMatrix &A,
+                                TrilinosWrappers::MPI::Vector        &x,
+                                const TrilinosWrappers::MPI::Vector  &b)
+    {
+      auto      &matrix = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
+      const bool same_pattern = factorised_matrix == &matrix &&
+                                factorised_nnz == A.n_nonzero_elements();
       if (!same_pattern && prm.direct_solver == parameters::DirectSolver::mumps)
         {
           MumpsDirect::Settings settings;
@@ -365,7 +381,7 @@ namespace formsolve
           if (gmres_with_factors(*last_matrix, x, b, prm.reuse_iterations, its))
             return its;
           x = 0;
-          return factorise_and_substitute(x, b);
+          return prm.reuse_iterations + factorise_and_substitute(x, b);
         }
       return iterate_or_fall_back(*last_matrix, x, b);
     }

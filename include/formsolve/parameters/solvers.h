@@ -144,6 +144,9 @@ namespace formsolve
       /// preconditioner before refactorising; 0: factorise every matrix.
       unsigned int reuse_iterations = 0;
       double       reuse_tolerance  = 1e-10; // relative residual of that GMRES
+      /// Largest |v - v_f|/|v| between the velocity of a new matrix and that
+      /// of the factorised one for which reuse is tried (0: always tried).
+      double reuse_velocity_change = 0;
       /// MUMPS block low-rank dropping tolerance (-); 0: full-rank factors.
       double low_rank_tolerance = 0;
       /// GMRES iterations allowed with the low-rank factors.

@@ -10,6 +10,7 @@
 #include <formsolve/contact/penalty_strategy.h>
 #include <formsolve/simulation/state.h>
 #include <formsolve/solver/assembler.h>
+#include <formsolve/solver/factor_reuse.h>
 #include <formsolve/solver/holder_coupling.h>
 #include <formsolve/solver/linear_solver.h>
 #include <formsolve/solver/newton_solver.h>
@@ -124,6 +125,7 @@ namespace formsolve
       /// estimates at accepted iterates.
       MatrixType          body_matrix;
       VectorType          residual, body_residual;
+      FactorReuse         factor_reuse;
       std::vector<double> epsilon;
       std::vector<bool>   last_active;
       /// Logging only: the status per contact record (node, tool) at the

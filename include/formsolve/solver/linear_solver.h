@@ -36,9 +36,12 @@ namespace formsolve
       /// symbolic factorisation (ordering) while the matrix object and its
       /// sparsity stay the same; only the numeric factorisation is redone.
       /// The solver refers to @p A until destroyed: destroy it first.
+      /// @p may_reuse false: no attempt with earlier factors (Reuse
+      /// factorisation iterations); a direct solve factorises A.
       unsigned int solve(const dealii::TrilinosWrappers::SparseMatrix &A,
                          dealii::TrilinosWrappers::MPI::Vector        &x,
-                         const dealii::TrilinosWrappers::MPI::Vector  &b);
+                         const dealii::TrilinosWrappers::MPI::Vector  &b,
+                         const bool may_reuse = true);
 
       /// Solves A x = b with the matrix of the last solve(): the direct
       /// solver reuses its factorisation (one more forward and back
@@ -104,6 +107,8 @@ namespace formsolve
       double                                        last_condition    = 0;
       unsigned long                                 n_factorisations  = 0;
       NullSpace                                     null_space;
+      /// solve()'s may_reuse.
+      bool try_reuse = true;
       /// The last solve was direct (its factors serve solve_again()).
       bool last_direct = true;
       /// The factorisation is that of last_matrix's current values (else it
@@ -135,6 +140,12 @@ namespace formsolve
       unsigned int solve_direct(const dealii::TrilinosWrappers::SparseMatrix &A,
                                 dealii::TrilinosWrappers::MPI::Vector        &x,
                                 const dealii::TrilinosWrappers::MPI::Vector &b);
+      /// The direct solve with A factorised (analysed first if its pattern
+      /// is new).
+      unsigned int
+      factorise_new(const dealii::TrilinosWrappers::SparseMatrix &A,
+                    dealii::TrilinosWrappers::MPI::Vector        &x,
+                    const dealii::TrilinosWrappers::MPI::Vector  &b);
       /// ML on @p A with the null space and smoother of the parameters.
       void initialise_amg(const dealii::TrilinosWrappers::SparseMatrix &A);
       /// The iterative solve; if it does not converge, the direct one (or an
