@@ -4,12 +4,21 @@
 # preconditioner (Reuse tolerance 1e-6); everything else the default case.
 # Needs both cores for about 1.5-2 h. Writes results/full-draw-262k/run/,
 # run.log and time.txt (/usr/bin/time -v); doc/performance.md reports it.
-# Usage: bash benchmarks/full_draw_262k.sh
+# With "reuse": factorisations also reused between close velocities (Reuse
+# factorisation iterations = 10, Reuse velocity change = 2e-3), into
+# results/full-draw-262k-reuse/.
+# Usage: bash benchmarks/full_draw_262k.sh [reuse]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=${FORMSOLVE_EXE:-$root/build/formsolve}
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
 out=$root/results/full-draw-262k
+extra=()
+if [ "${1:-}" = reuse ]; then
+  out=$root/results/full-draw-262k-reuse
+  extra=(--set "Linear solver/Reuse factorisation iterations=10"
+    --set "Linear solver/Reuse velocity change=2e-3")
+fi
 mkdir -p "$out"
 export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 git -C "$root" rev-parse --short HEAD > "$out/commit"
@@ -19,6 +28,7 @@ cd "$root/prm"
   --set "Mesh/Layers through thickness=6" --set "Mesh/Planform refinements=6" \
   --set "Output/Output directory=$out/run" --set "Output/Revolved copy=false" \
   --set "Linear solver/Factor precision=single" \
-  --set "Linear solver/Reuse tolerance=1e-6" > "$out/run.log" 2> "$out/time.txt"
+  --set "Linear solver/Reuse tolerance=1e-6" ${extra[@]+"${extra[@]}"} \
+  > "$out/run.log" 2> "$out/time.txt"
 grep "^done" "$out/run.log"
 grep -E "Elapsed|Maximum resident" "$out/time.txt"
