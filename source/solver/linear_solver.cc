@@ -102,14 +102,19 @@ namespace formsolve
       return iterate_or_fall_back(A, x, b);
     }
 
+    bool LinearSolver::has_factorised_pattern(
+      const TrilinosWrappers::SparseMatrix &A) const
+    {
+      return factorised_matrix == &A.trilinos_matrix() &&
+             factorised_nnz == A.n_nonzero_elements();
+    }
+
     unsigned int
     LinearSolver::solve_direct(const TrilinosWrappers::SparseMatrix &A,
                                TrilinosWrappers::MPI::Vector        &x,
                                const TrilinosWrappers::MPI::Vector  &b)
     {
-      auto      &matrix = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
-      const bool same_pattern = factorised_matrix == &matrix &&
-                                factorised_nnz == A.n_nonzero_elements();
+      const bool same_pattern = has_factorised_pattern(A);
       if (same_pattern && n_factorisations > 0 && prm.reuse_iterations > 0 &&
           try_reuse)
         {
@@ -132,8 +137,7 @@ namespace formsolve
                                 const TrilinosWrappers::MPI::Vector  &b)
     {
       auto      &matrix = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
-      const bool same_pattern = factorised_matrix == &matrix &&
-                                factorised_nnz == A.n_nonzero_elements();
+      const bool same_pattern = has_factorised_pattern(A);
       if (!same_pattern && prm.direct_solver == parameters::DirectSolver::mumps)
         {
           MumpsDirect::Settings settings;

@@ -140,6 +140,9 @@ namespace formsolve
       unsigned int solve_direct(const dealii::TrilinosWrappers::SparseMatrix &A,
                                 dealii::TrilinosWrappers::MPI::Vector        &x,
                                 const dealii::TrilinosWrappers::MPI::Vector &b);
+      /// A is the analysed matrix object with its sparsity unchanged.
+      bool has_factorised_pattern(
+        const dealii::TrilinosWrappers::SparseMatrix &A) const;
       /// The direct solve with A factorised (analysed first if its pattern
       /// is new).
       unsigned int
