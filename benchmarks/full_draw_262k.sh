@@ -6,8 +6,10 @@
 # run.log and time.txt (/usr/bin/time -v); doc/performance.md reports it.
 # With "reuse": factorisations also reused between close velocities (Reuse
 # factorisation iterations = 10, Reuse velocity change = 2e-3), into
-# results/full-draw-262k-reuse/.
-# Usage: bash benchmarks/full_draw_262k.sh [reuse]
+# results/full-draw-262k-reuse/. With "forcing": inexact Newton as well
+# (Nonlinear solver/Forcing = 1) and factors tried up to Reuse velocity
+# change = 3e-2, into results/full-draw-262k-forcing/.
+# Usage: bash benchmarks/full_draw_262k.sh [reuse|forcing]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=${FORMSOLVE_EXE:-$root/build/formsolve}
@@ -18,6 +20,11 @@ if [ "${1:-}" = reuse ]; then
   out=$root/results/full-draw-262k-reuse
   extra=(--set "Linear solver/Reuse factorisation iterations=10"
     --set "Linear solver/Reuse velocity change=2e-3")
+elif [ "${1:-}" = forcing ]; then
+  out=$root/results/full-draw-262k-forcing
+  extra=(--set "Linear solver/Reuse factorisation iterations=10"
+    --set "Linear solver/Reuse velocity change=3e-2"
+    --set "Nonlinear solver/Forcing=1")
 fi
 mkdir -p "$out"
 export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1

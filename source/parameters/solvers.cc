@@ -141,6 +141,16 @@ namespace formsolve
         "where theta <= 1/2 (Deuflhard's estimate; |dv| elsewhere). It saves "
         "the last iteration of a quadratically converging solve.");
       prm.declare_entry(
+        "Forcing",
+        "0",
+        Double(0, 1),
+        "Inexact Newton: a linear solve that iterates (GMRES with reused, "
+        "single-precision, low-rank or symmetric-part factors) stops at "
+        "|b - A x|/|b| <= min(0.1, Forcing * |r|/|f|), the Newton residual "
+        "of the iterate, and never below Linear solver/Reuse tolerance (-). "
+        "0: always to Reuse tolerance. A solve with fresh exact factors is "
+        "exact whatever this is.");
+      prm.declare_entry(
         "Predictor",
         "keep contact",
         Selection("previous velocity|keep contact"),
@@ -191,6 +201,7 @@ namespace formsolve
       max_iterations        = prm.get_integer("Max iterations");
       residual_tolerance    = prm.get_double("Residual tolerance");
       correction_tolerance  = prm.get_double("Correction tolerance");
+      forcing               = prm.get_double("Forcing");
       correction_measure    = prm.get("Correction measure") == "contraction"
                                 ? CorrectionMeasure::contraction
                                 : CorrectionMeasure::last;

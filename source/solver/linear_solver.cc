@@ -350,7 +350,8 @@ namespace formsolve
         }
       } factors{this};
       SolverControl                              control(max_iterations,
-                            prm.reuse_tolerance * b.l2_norm(),
+                            std::max(prm.reuse_tolerance, forcing) *
+                              b.l2_norm(),
                             false,
                             false);
       SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(

@@ -50,6 +50,11 @@ namespace formsolve
           report.picard_iterations += picard;
           dv                      = 0;
           unsigned int linear_its = 0;
+          if (prm.forcing > 0)
+            system.set_linear_tolerance(
+              std::min(0.1,
+                       prm.forcing * r /
+                         std::max(system.force_scale(), 1e-300)));
           try
             {
               linear_its = system.solve(dv);

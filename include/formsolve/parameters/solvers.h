@@ -67,6 +67,7 @@ namespace formsolve
       CorrectionMeasure correction_measure    = CorrectionMeasure::contraction;
       Predictor         predictor             = Predictor::keep_contact;
       unsigned int      max_line_search_steps = 6;
+      double            forcing               = 0; // inexact Newton; 0: off
       unsigned int      picard_iterations     = 0;
       bool              picard_fallback       = true;
       bool              log_iterations        = false;

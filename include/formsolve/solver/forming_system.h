@@ -81,12 +81,16 @@ namespace formsolve
       double       force_scale() const override { return f_scale; }
       double       directional_derivative(const VectorType &dv) const override;
       unsigned int solve(VectorType &dv) override;
-      bool         contact_set_changed() override;
-      double       update_penalty() override;
-      double       correct_penalty() override;
-      std::string  iteration_info() const override;
-      void         set_step_length(const double alpha) override;
-      void         accept_step() override;
+      void         set_linear_tolerance(const double tolerance) override
+      {
+        linear_solver->set_forcing(tolerance);
+      }
+      bool        contact_set_changed() override;
+      double      update_penalty() override;
+      double      correct_penalty() override;
+      std::string iteration_info() const override;
+      void        set_step_length(const double alpha) override;
+      void        accept_step() override;
       /// The tangent of eq. 4 (doc/theory.md) at the accepted iterate, the
       /// trials of the stress-velocity tangent forgotten (a rejected line
       /// search).

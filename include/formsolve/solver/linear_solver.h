@@ -49,6 +49,10 @@ namespace formsolve
       unsigned int solve_again(dealii::TrilinosWrappers::MPI::Vector       &x,
                                const dealii::TrilinosWrappers::MPI::Vector &b);
 
+      /// Inexact Newton: GMRES with factors stops at this relative residual
+      /// if it is above Reuse tolerance (0: at Reuse tolerance).
+      void set_forcing(const double tolerance) { forcing = tolerance; }
+
       /// Time the direct solver's phases in @p timer: sections "linear
       /// solve: analysis", "...: factorisation", "...: substitution" (within
       /// the caller's "linear solve").
@@ -107,6 +111,8 @@ namespace formsolve
       double                                        last_condition    = 0;
       unsigned long                                 n_factorisations  = 0;
       NullSpace                                     null_space;
+      /// set_forcing()'s relative residual.
+      double forcing = 0;
       /// solve()'s may_reuse.
       bool try_reuse = true;
       /// The last solve was direct (its factors serve solve_again()).

@@ -47,6 +47,9 @@ namespace formsolve
       /// Solve K dv = -r with the last assembled K, r (and the corrections
       /// of any extra unknowns). Returns iterations.
       virtual unsigned int solve(VectorType &dv) = 0;
+      /// Inexact Newton: the relative residual at which the next solve()
+      /// may stop where it iterates (0: the linear solver's own tolerance).
+      virtual void set_linear_tolerance(const double /*tolerance*/) {}
       /// Extra unknowns (the blank holder under force control) follow the
       /// line search: their trial values are the accepted ones plus
       /// @p alpha times their last correction. Called before each trial
