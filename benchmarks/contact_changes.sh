@@ -9,8 +9,11 @@
 # iteration 1 and in iterations 2 and later.
 # QUARTER_LEVELS="4 5" adds the quarter at those planform levels (4 layers,
 # adaptive-strict only) to the table.
+# LOGS="label=path/run.log ..." adds runs made elsewhere with Log iterations
+# (their history in path/run/history.csv; label model-strategy), e.g. the
+# 262k full draw of benchmarks/full_draw_262k.sh forcing.
 # Writes doc/contact-changes.csv and prints the tables of doc/convergence.md.
-# Usage: [QUARTER_LEVELS="4 5"] bash benchmarks/contact_changes.sh [--force]
+# Usage: [QUARTER_LEVELS="4 5"] [LOGS=...] bash benchmarks/contact_changes.sh [--force]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=${FORMSOLVE_EXE:-$root/build/formsolve}
@@ -39,15 +42,21 @@ for name in "${runs[@]}"; do
       --set "Output/Output directory=$out/$name") > "$out/$name.log" 2>&1 ||
       { tail -3 "$out/$name.log"; exit 1; }
 done
+for spec in ${LOGS:-}; do runs+=("$spec"); done
 /usr/bin/python3 - "$out" "$root/doc/contact-changes.csv" "${runs[@]}" <<'PY'
-import collections, csv, re, sys
+import collections, csv, os, re, sys
 out, csv_path, runs = sys.argv[1], sys.argv[2], sys.argv[3:]
 tools = ["punch", "die", "blank_holder"]
 rows = []
-for run in runs:
+for spec in runs:
+        # A run of this script, or label=path/run.log from LOGS.
+        run, _, log = spec.partition("=")
+        log = log or f"{out}/{run}.log"
+        history_path = os.path.join(os.path.dirname(log), "run", "history.csv") \
+            if "=" in spec else f"{out}/{run}/history.csv"
         model, strategy = run.split("-", 1)
         steps, current = [], []  # per step: (iteration, {tool: changes})
-        for line in open(f"{out}/{run}.log"):
+        for line in open(log):
             if line.startswith("step "):
                 steps.append(current)
                 current = []
@@ -71,11 +80,11 @@ for run in runs:
                 for t, n in c.items():
                     if i > 0:
                         pairs[(t, i > 1)] += n
-        dofs = re.search(r"(\d+) DoFs", open(f"{out}/{run}.log").readline())
+        dofs = re.search(r"(\d+) DoFs", open(log).readline())
         row = dict(model=model, strategy=strategy, dofs=int(dofs.group(1)),
                    steps=len(steps),
                    iterations=sum(sum(i > 0 for i, _ in s) for s in steps))
-        history = list(csv.DictReader(open(f"{out}/{run}/history.csv")))
+        history = list(csv.DictReader(open(history_path)))
         assert row["iterations"] == sum(int(h["newton_iterations"]) for h in history), run
         for g in range(5):
             its = groups.get(g, [])

@@ -8,7 +8,8 @@
 # factorisation iterations = 10, Reuse velocity change = 2e-3), into
 # results/full-draw-262k-reuse/. With "forcing": inexact Newton as well
 # (Nonlinear solver/Forcing = 1) and factors tried up to Reuse velocity
-# change = 3e-2, into results/full-draw-262k-forcing/.
+# change = 3e-2, into results/full-draw-262k-forcing/, with a checkpoint
+# every 10 steps and the Newton iterations logged (to replay a hard step).
 # Usage: bash benchmarks/full_draw_262k.sh [reuse|forcing]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -24,7 +25,9 @@ elif [ "${1:-}" = forcing ]; then
   out=$root/results/full-draw-262k-forcing
   extra=(--set "Linear solver/Reuse factorisation iterations=10"
     --set "Linear solver/Reuse velocity change=3e-2"
-    --set "Nonlinear solver/Forcing=1")
+    --set "Nonlinear solver/Forcing=1"
+    --set "Output/Checkpoint interval=10"
+    --set "Nonlinear solver/Log iterations=true")
 fi
 mkdir -p "$out"
 export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1

@@ -42,6 +42,16 @@ namespace formsolve
                         Integer(1),
                         "Newton iterations (all passes of a step) up to "
                         "which a step counts as easy.");
+      prm.declare_entry(
+        "Regrowth after steps",
+        "4",
+        Integer(0),
+        "Below 'Time step', the time step also grows by 'Growth factor' "
+        "after this many converged steps in a row without a cut and without "
+        "growth, easy or not (steps). Where every step needs more than "
+        "'Easy step iterations' (fine meshes), a single cut would otherwise "
+        "halve the time step for the rest of the run. 0: growth after easy "
+        "steps only.");
       prm.declare_entry("Max cutbacks",
                         "8",
                         Integer(0),
@@ -66,6 +76,7 @@ namespace formsolve
       cutback_factor    = prm.get_double("Cutback factor");
       growth_factor     = prm.get_double("Growth factor");
       easy_iterations   = prm.get_integer("Easy step iterations");
+      regrowth_steps    = prm.get_integer("Regrowth after steps");
       max_cutbacks      = prm.get_integer("Max cutbacks");
       const auto end    = prm.get("End of run");
       end_of_run        = end == "stroke"           ? EndOfRun::stroke

@@ -43,6 +43,9 @@ namespace formsolve
       // The last correction, for the contraction estimate.
       bool   last_full = false, last_stalled = false;
       double last_step = 0, last_xstep = 0;
+      // Inexact Newton: once an inexact direction has failed in this solve,
+      // the linear solves go to Reuse tolerance again.
+      bool tight = prm.forcing == 0;
 
       for (unsigned int it = 1; it <= prm.max_iterations; ++it)
         {
@@ -52,9 +55,10 @@ namespace formsolve
           unsigned int linear_its = 0;
           if (prm.forcing > 0)
             system.set_linear_tolerance(
-              std::min(0.1,
-                       prm.forcing * r /
-                         std::max(system.force_scale(), 1e-300)));
+              tight ? 0.
+                    : std::min(0.1,
+                               prm.forcing * r /
+                                 std::max(system.force_scale(), 1e-300)));
           try
             {
               linear_its = system.solve(dv);
@@ -151,15 +155,29 @@ namespace formsolve
             }
           if (fallback > 0)
             --fallback;
+          // An inexact direction that does not descend, or along which no
+          // trial lowered the merit, is not taken: the iteration stays at v
+          // and solves again to Reuse tolerance. Taking it (the full step
+          // where g0 >= 0, a direct iteration after a stall) let a 262k-DoF
+          // step diverge to |r|/|f| = 2e8 (doc/performance.md).
+          const bool rejected = !tight && (stalled || !(g0 < 0));
+          tight               = tight || rejected;
           // No trial lowered the merit: the direction does not descend |r|
           // (the stress-velocity tangent is not the derivative of r). Stay at
           // v and take the next direction from the exact tangent, whose
           // direction does, where r is smooth. If that stalls too: a few
           // direct (secant) iterations from the shortest trial, then Newton
           // again.
-          const bool retry = stalled && !last_stalled;
-          last_stalled     = stalled;
-          if (retry)
+          const bool retry = !rejected && stalled && !last_stalled;
+          last_stalled     = stalled && !rejected;
+          if (rejected)
+            {
+              alpha = 0;
+              trial = v;
+              system.set_step_length(0);
+              r_trial = system.assemble(trial, next_newton);
+            }
+          else if (retry)
             {
               alpha = 0;
               trial = v;
@@ -209,8 +227,9 @@ namespace formsolve
               << report.residual << "  |dv|/|v|=" << dv_rel
               << "  alpha=" << alpha << "  linear=" << linear_its
               << (changed ? "  contact set changed" : "")
-              << (retry ? "  stalled: exact tangent" : "") << std::defaultfloat
-              << system.iteration_info() << std::endl;
+              << (retry ? "  stalled: exact tangent" : "")
+              << (rejected ? "  inexact direction rejected" : "")
+              << std::defaultfloat << system.iteration_info() << std::endl;
           // Near convergence, with the contact set settled: the strategy's
           // bound is checked here once; a correction changes the equations,
           // so the iteration goes on (doc/convergence.md).
@@ -228,7 +247,8 @@ namespace formsolve
                     << report.residual << std::defaultfloat << std::endl;
                 continue;
               }
-          if (!retry && report.residual <= prm.residual_tolerance &&
+          if (!retry && !rejected &&
+              report.residual <= prm.residual_tolerance &&
               left * dv_rel <= prm.correction_tolerance && !changed &&
               system.extra_residual() <= prm.residual_tolerance &&
               left * xstep <= prm.correction_tolerance)

@@ -25,8 +25,15 @@ namespace formsolve
 
     void StepControl::accept(const unsigned int iterations)
     {
-      if (step_cutbacks == 0 && iterations <= prm.easy_iterations)
-        dt = std::min(dt * prm.growth_factor, prm.time_step);
+      // Calm steps: converged in a row without a cut, since the last growth.
+      calm_steps = step_cutbacks == 0 ? calm_steps + 1 : 0;
+      if (step_cutbacks == 0 && dt < prm.time_step &&
+          (iterations <= prm.easy_iterations ||
+           (prm.regrowth_steps > 0 && calm_steps >= prm.regrowth_steps)))
+        {
+          dt         = std::min(dt * prm.growth_factor, prm.time_step);
+          calm_steps = 0;
+        }
     }
   } // namespace solver
 } // namespace formsolve

@@ -1,6 +1,6 @@
 // Step control: cuts on failure down to the minimum and no further, at most
-// Max cutbacks per step, grows only after easy steps without cuts, never
-// above the nominal time step.
+// Max cutbacks per step, grows after easy steps without cuts or after
+// Regrowth after steps hard ones in a row, never above the nominal time step.
 #include <formsolve/solver/step_control.h>
 
 #include "check.h"
@@ -16,6 +16,7 @@ int main()
   p.growth_factor     = 1.5;
   p.easy_iterations   = 5;
   p.max_cutbacks      = 8;
+  p.regrowth_steps    = 0;
 
   solver::StepControl c(p);
   c.begin_step();
@@ -32,8 +33,15 @@ int main()
   c.accept(3); // converged after cuts: no growth in this step
   test::close("no growth right after cuts", c.time_step(), 0.1, 1e-15);
   c.begin_step();
-  c.accept(6); // not easy
-  test::close("no growth after a hard step", c.time_step(), 0.1, 1e-15);
+  for (int i = 0; i < 10; ++i)
+    {
+      c.begin_step();
+      c.accept(6); // not easy
+    }
+  test::close("no growth after hard steps (Regrowth after steps = 0)",
+              c.time_step(),
+              0.1,
+              1e-15);
   c.begin_step();
   c.accept(5); // easy
   test::close("growth after an easy step", c.time_step(), 0.15, 1e-15);
@@ -44,7 +52,41 @@ int main()
     }
   test::close("grows back to the nominal step only", c.time_step(), 1, 1e-15);
 
-  p.max_cutbacks = 2;
+  // Hard steps only (10 > 5 iterations): growth after every third one.
+  p.regrowth_steps = 3;
+  solver::StepControl e(p);
+  e.begin_step();
+  e.reject(); // 0.5
+  e.accept(10);
+  for (int i = 0; i < 2; ++i)
+    {
+      e.begin_step();
+      e.accept(10);
+    }
+  test::close("no growth after two hard steps", e.time_step(), 0.5, 1e-15);
+  e.begin_step();
+  e.accept(10);
+  test::close("growth after three hard ones", e.time_step(), 0.75, 1e-15);
+  for (int i = 0; i < 2; ++i)
+    {
+      e.begin_step();
+      e.accept(10);
+    }
+  test::close("the count restarts after growth", e.time_step(), 0.75, 1e-15);
+  e.begin_step();
+  e.accept(10);
+  test::close("grows to the nominal step", e.time_step(), 1, 1e-15);
+  e.begin_step();
+  e.reject(); // 0.5, the count restarts
+  e.accept(10);
+  e.begin_step();
+  e.accept(10);
+  e.begin_step();
+  e.accept(10);
+  test::close("a cut restarts the count", e.time_step(), 0.5, 1e-15);
+
+  p.regrowth_steps = 0;
+  p.max_cutbacks   = 2;
   solver::StepControl d(p);
   d.begin_step();
   test::close("cut 1 of 2", d.reject(), 1, 0);

@@ -26,7 +26,8 @@ namespace formsolve
       double       cutback_factor    = 0.5;  // dt <- this * dt on failure
       double       growth_factor     = 1.5;  // dt <- this * dt after easy steps
       unsigned int easy_iterations   = 8;    // Newton its of an easy step
-      unsigned int max_cutbacks      = 8;    // per step
+      unsigned int regrowth_steps    = 4; // growth after this many calm steps
+      unsigned int max_cutbacks      = 8; // per step
       EndOfRun     end_of_run        = EndOfRun::stroke;
 
       static void declare(ParameterHandler &prm);

@@ -1,5 +1,6 @@
 // Time-step control: a failed step is retried with a smaller time step; the
-// time step grows back after easy steps (Time stepping subsection).
+// time step grows back after easy steps, or after a run of converged steps
+// (Time stepping subsection).
 #pragma once
 
 #include <formsolve/parameters/solvers.h>
@@ -21,7 +22,8 @@ namespace formsolve
       /// is allowed (at or above the minimum, within Max cutbacks).
       bool reject();
       /// The step converged in @p iterations Newton iterations: grow the
-      /// time step after an easy step without cutbacks.
+      /// time step after an easy step without cutbacks, or after Regrowth
+      /// after steps such steps in a row.
       void         accept(const unsigned int iterations);
       unsigned int cutbacks() const { return step_cutbacks; }
       /// Continue with time step @p t (a resumed run).
@@ -31,6 +33,7 @@ namespace formsolve
       parameters::TimeStepping prm;
       double                   dt;
       unsigned int             step_cutbacks = 0;
+      unsigned int             calm_steps    = 0; // see accept()
     };
   } // namespace solver
 } // namespace formsolve
