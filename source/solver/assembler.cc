@@ -6,6 +6,7 @@
 #include <formsolve/model/dimensions.h>
 #include <formsolve/model/position_order.h>
 #include <formsolve/solver/assembler.h>
+#include <formsolve/solver/cell_scatter.h>
 #include <formsolve/solver/cell_tangent.h>
 
 #include <algorithm>
@@ -67,7 +68,8 @@ namespace formsolve
                                   const bool                       newton,
                                   MatrixType                      *matrix,
                                   VectorType                      &residual,
-                                  DualStress                      *dual) const
+                                  DualStress                      *dual,
+                                  const CellScatter<dim> *scatter) const
     {
       const auto         &fe = dof_handler.get_fe();
       const unsigned int  n  = fe.n_dofs_per_cell();
@@ -157,7 +159,12 @@ namespace formsolve
               tangent.finish(K);
             f_int2 += r.norm_sqr();
             cell->get_dof_indices(dofs);
-            if (matrix)
+            if (matrix && scatter && scatter->maps(cell->active_cell_index()))
+              {
+                scatter->add(cell->active_cell_index(), K, *matrix);
+                constraints.distribute_local_to_global(r, dofs, residual);
+              }
+            else if (matrix)
               constraints.distribute_local_to_global(K,
                                                      r,
                                                      dofs,

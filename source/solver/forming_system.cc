@@ -54,6 +54,7 @@ namespace formsolve
                                                  state.comm,
                                                  state.relevant);
       matrix.reinit(state.owned, state.owned, dsp, state.comm);
+      scatter.reinit(state.dof_handler, state.constraints, matrix);
       if (strategy.needs_system())
         body_matrix.reinit(matrix);
       residual.reinit(state.owned, state.comm);
@@ -201,7 +202,8 @@ namespace formsolve
                                   newton,
                                   with_matrix ? &matrix : nullptr,
                                   residual,
-                                  use_dual && !exact_tangent ? &dual : nullptr);
+                                  use_dual && !exact_tangent ? &dual : nullptr,
+                                  &scatter);
       }
       // Line-search trials (no matrix) keep the factors of the iterate.
       bool estimate = !strategy.needs_system();

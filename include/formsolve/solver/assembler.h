@@ -29,6 +29,9 @@ namespace formsolve
     /// The largest value of a history field and where it is (current
     /// configuration), on all ranks.
     template <int dim>
+    class CellScatter;
+
+    template <int dim>
     struct HistoryMaximum
     {
       double             value = 0;
@@ -65,7 +68,8 @@ namespace formsolve
                            const bool                               newton,
                            MatrixType                              *matrix,
                            VectorType                              &residual,
-                           DualStress *dual = nullptr) const;
+                           DualStress             *dual    = nullptr,
+                           const CellScatter<dim> *scatter = nullptr) const;
 
       /// The strain rate below which the flow law is linear (1/s).
       double cutoff_rate() const { return material.cutoff_rate(); }

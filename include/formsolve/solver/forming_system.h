@@ -10,6 +10,7 @@
 #include <formsolve/contact/penalty_strategy.h>
 #include <formsolve/simulation/state.h>
 #include <formsolve/solver/assembler.h>
+#include <formsolve/solver/cell_scatter.h>
 #include <formsolve/solver/factor_reuse.h>
 #include <formsolve/solver/holder_coupling.h>
 #include <formsolve/solver/linear_solver.h>
@@ -124,7 +125,8 @@ namespace formsolve
       dealii::TimerOutput           &timer;
       contact::ContactSearch<dim>    search;
 
-      MatrixType matrix;
+      MatrixType       matrix;
+      CellScatter<dim> scatter; // positions of the cell tangents in matrix
       /// Body system (no contact) of the last assembly, kept for penalty
       /// estimates at accepted iterates.
       MatrixType          body_matrix;
