@@ -11,7 +11,9 @@
 # (Nonlinear solver/Forcing = 1) and factors tried up to Reuse velocity
 # change = 3e-2, into results/full-draw-262k-forcing/, with a checkpoint
 # every 10 steps and the Newton iterations logged (to replay a hard step).
-# Usage: bash benchmarks/full_draw_262k.sh [reuse|forcing]
+# With "forcing-symmetric": as "forcing", with the factors those of the
+# symmetric part (LDL^T), into results/full-draw-262k-forcing-symmetric/.
+# Usage: [STROKE=mm] bash benchmarks/full_draw_262k.sh [reuse|forcing|forcing-symmetric]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=${FORMSOLVE_EXE:-$root/build/formsolve}
@@ -22,14 +24,20 @@ if [ "${1:-}" = reuse ]; then
   out=$root/results/full-draw-262k-reuse
   extra=(--set "Linear solver/Reuse factorisation iterations=10"
     --set "Linear solver/Reuse velocity change=2e-3")
-elif [ "${1:-}" = forcing ]; then
-  out=$root/results/full-draw-262k-forcing
+elif [ "${1:-}" = forcing ] || [ "${1:-}" = forcing-symmetric ]; then
+  out=$root/results/full-draw-262k-$1
   extra=(--set "Linear solver/Reuse factorisation iterations=10"
     --set "Linear solver/Reuse velocity change=3e-2"
     --set "Nonlinear solver/Forcing=1"
     --set "Output/Checkpoint interval=10"
     --set "Nonlinear solver/Log iterations=true")
+  # LDL^T of the symmetric part (single precision) as GMRES's preconditioner.
+  [ "$1" = forcing-symmetric ] &&
+    extra+=(--set "Linear solver/Unsymmetric tangent=symmetric part")
 fi
+# STROKE=mm stops the draw there (the same steps as the whole draw's first).
+[ -n "${STROKE:-}" ] && extra+=(--set "Tools/Punch/Stroke=$STROKE"
+  --set "Time stepping/End of run=stroke")
 mkdir -p "$out"
 export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 git -C "$root" rev-parse --short HEAD > "$out/commit"
