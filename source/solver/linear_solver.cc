@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <formsolve/solver/flexible_gmres.h>
 #include <formsolve/solver/linear_solver.h>
 
 #include <Amesos.h>
@@ -339,36 +340,22 @@ namespace formsolve
                                      unsigned int      &iterations)
     {
       // The factors live in the solver (MUMPS, KLU), not in A: they stay
-      // those of the matrix values at the last factorisation.
-      struct Factors
-      {
-        LinearSolver *solver;
-        void          vmult(TrilinosWrappers::MPI::Vector       &dst,
-                            const TrilinosWrappers::MPI::Vector &src) const
-        {
-          solver->substitute(dst, src);
-        }
-      } factors{this};
-      SolverControl                              control(max_iterations,
-                            std::max(prm.reuse_tolerance, forcing) *
-                              b.l2_norm(),
-                            false,
-                            false);
-      SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-        control,
-        SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
-          std::min(max_iterations + 2, 102u),
-          true)); // right preconditioning: the true residual is tested
-      try
-        {
-          gmres.solve(A, x, b, factors);
-        }
-      catch (const SolverControl::NoConvergence &)
-        {
-          return false;
-        }
-      iterations = control.last_step();
-      return true;
+      // those of the matrix values at the last factorisation. Flexible
+      // GMRES: x is built from the preconditioned vectors themselves, so the
+      // residual tested is that of x (solver/flexible_gmres.h).
+      const auto result = flexible_gmres(
+        [&A](TrilinosWrappers::MPI::Vector       &dst,
+             const TrilinosWrappers::MPI::Vector &src) { A.vmult(dst, src); },
+        [this](TrilinosWrappers::MPI::Vector       &dst,
+               const TrilinosWrappers::MPI::Vector &src) {
+          substitute(dst, src);
+        },
+        x,
+        b,
+        std::max(prm.reuse_tolerance, forcing) * b.l2_norm(),
+        max_iterations);
+      iterations = result.iterations;
+      return result.converged;
     }
 
     unsigned int
