@@ -317,20 +317,22 @@ namespace formsolve
       dw = 0;
       if (holder_controlled())
         {
-          if (holder.engaged())
+          if (holder.engaged() && !hold_holder)
             {
               // Bordered system: one more solve with the same factorisation.
               VectorType z(state.owned, state.comm);
               its += linear_solver->solve_again(z, holder.column());
-              // The first correction of a step comes from the secant tangent
-              // (dual reset), under which the sheet below the holder is 5-10x
-              // softer than in Newton's: the Schur complement (e - c^T K^-1
-              // b) is then 2e-4 e, and dw about 100x the holder's speed. The
-              // holder keeps its velocity for that one correction
-              // (doc/theory.md section 6a).
-              dw = hold_holder ? 0. : holder.correction(dv, z);
+              dw = holder.correction(dv, z);
               dv.add(-dw, z);
             }
+          else if (holder.engaged())
+            // The first correction of a step comes from the secant tangent
+            // (dual reset), under which the sheet below the holder is 5-10x
+            // softer than in Newton's: the Schur complement (e - c^T K^-1 b)
+            // is then 2e-4 e, and dw about 100x the holder's speed. The
+            // holder keeps its velocity for that one correction (doc/theory.md
+            // section 6a), and K^-1 b is not needed.
+            dw = 0;
           else
             dw = holder.closing_correction(state.tools.allowed_penetration(
                                              state.tools.holder_index()),
