@@ -157,8 +157,11 @@ namespace formsolve
         Double(0, 1),
         "Inexact Newton: a linear solve that iterates (GMRES with reused, "
         "single-precision, low-rank or symmetric-part factors) stops at "
-        "|b - A x|/|b| <= min(0.1, Forcing * |r|/|f|), the Newton residual "
-        "of the iterate, and never below Linear solver/Reuse tolerance (-). "
+        "|b - A x|/|b| <= min(0.1, max(Forcing * |r|/|f|, 0.5 Residual "
+        "tolerance/(|r|/|f|))), with |r|/|f| the Newton residual of the "
+        "iterate (the second term: near convergence no more accuracy than the "
+        "next residual needs), and never below Linear solver/Reuse tolerance "
+        "(-). "
         "0: always to Reuse tolerance. A solve with fresh exact factors is "
         "exact whatever this is.");
       prm.declare_entry(

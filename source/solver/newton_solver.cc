@@ -54,11 +54,18 @@ namespace formsolve
           dv                      = 0;
           unsigned int linear_its = 0;
           if (prm.forcing > 0)
-            system.set_linear_tolerance(
-              tight ? 0.
-                    : std::min(0.1,
-                               prm.forcing * r /
-                                 std::max(system.force_scale(), 1e-300)));
+            {
+              // Near the tolerance, no more accuracy than the next residual
+              // needs: eta >= 0.5 tol/(|r|/|f|) (Kelley's safeguard,
+              // doc/theory.md section 8).
+              const double rel = r / std::max(system.force_scale(), 1e-300);
+              system.set_linear_tolerance(
+                tight ? 0.
+                      : std::min(0.1,
+                                 std::max(prm.forcing * rel,
+                                          0.5 * prm.residual_tolerance /
+                                            std::max(rel, 1e-300))));
+            }
           try
             {
               linear_its = system.solve(dv);
