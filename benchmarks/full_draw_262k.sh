@@ -2,8 +2,8 @@
 # The full draw of the quarter 3-D cup at 262k DoFs (planform level 6, 6
 # layers), 2 ranks, single-precision factors reused as GMRES's
 # preconditioner (Reuse tolerance 1e-6); everything else the default case.
-# Needs both cores for about 1.8 h (1.3 h with "reuse", 1 h with
-# "forcing", measured on this machine). Writes results/full-draw-262k/run/,
+# Needs both cores for about 1.8 h (1.3 h with "reuse", 55 min with
+# "forcing" since 0d1e0c6, measured on this machine). Writes results/full-draw-262k/run/,
 # run.log and time.txt (/usr/bin/time -v); doc/performance.md reports it.
 # With "reuse": factorisations also reused between close velocities (Reuse
 # factorisation iterations = 10, Reuse velocity change = 2e-3), into

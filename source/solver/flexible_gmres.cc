@@ -1,5 +1,6 @@
 #include <formsolve/solver/flexible_gmres.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
