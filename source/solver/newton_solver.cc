@@ -57,7 +57,7 @@ namespace formsolve
             {
               // Near the tolerance, no more accuracy than the next residual
               // needs: eta >= 0.5 tol/(|r|/|f|) (Kelley's safeguard,
-              // doc/theory.md section 8).
+              // doc/theory.md section 9).
               const double rel = r / std::max(system.force_scale(), 1e-300);
               system.set_linear_tolerance(
                 tight ? 0.
