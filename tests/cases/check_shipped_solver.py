@@ -3,10 +3,11 @@ single-precision factors reused as GMRES's preconditioner within a Newton
 solve, inexact Newton with Forcing) against the reference of exact solves
 (cup-adaptive-short.history.csv, cup-adaptive-short.prm):
 - the physics per step at relative 3e-3 (check_regression.py). The
-  penetrations match within 3e-5 mm, 3 % of the allowed 1e-3 mm: an inexact
+  penetrations match within 5e-5 mm, 5 % of the allowed 1e-3 mm: an inexact
   Newton solve stops elsewhere within Newton's tolerance, which moved a
-  penetration by up to 2.3e-5 mm (punch, step 1; 1 and 2 ranks). Thinning
-  within 1e-3 percentage points (4e-4 measured, of 0.05 % in step 1). The
+  penetration by 2.3e-5 to 2.7e-5 mm (punch, step 1; 1 and 2 ranks, 7
+  runs); forces moved by 3e-5 (relative). The thinning, 0.05 % in step 1,
+  within 2e-3 percentage points (2.4e-4 on 1 rank, up to 8.9e-4 on 2). The
   locations of maxima and minima are left out: in the first steps the
   extremes tie between nodes;
 - the bound the strategy keeps: no penetration above 1e-3 mm;
@@ -21,7 +22,7 @@ import sys
 out, reference = sys.argv[1:3]
 here = os.path.dirname(os.path.abspath(__file__))
 ok = subprocess.call([sys.executable, os.path.join(here, "check_regression.py"), out, reference,
-                      "3e-3", "--absolute", "penetration=3e-5,thinning_percent=1e-3",
+                      "3e-3", "--absolute", "penetration=5e-5,thinning_percent=2e-3",
                       "--no-locations"]) == 0
 deepest = max(float(r["max_penetration"]) for r in csv.DictReader(open(os.path.join(out, "history.csv"))))
 print(f"deepest penetration {deepest:.4e} mm (allowed 1e-3)")
