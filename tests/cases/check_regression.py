@@ -16,7 +16,7 @@ Usage: check_regression.py OUTDIR REFERENCE [RELATIVE] [--absolute KEY=VALUE,...
   RELATIVE: the relative tolerance of the physics (default 1e-5), for
   solvers that converge a different way (e.g. single-precision factors).
   --absolute: columns whose name contains KEY match within VALUE (in the
-  column's unit) as well, e.g. penetration=3e-5 for solves that stop at a
+  column's unit) as well, e.g. penetration=5e-5 for solves that stop at a
   Newton tolerance.
   --no-locations: the locations of maxima and minima (_x, _y, _z) are not
   compared: with nearly tied nodes they follow round-off."""
