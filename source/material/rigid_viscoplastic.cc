@@ -11,6 +11,7 @@ namespace formsolve
     RigidViscoplastic::RigidViscoplastic(const parameters::Material &p)
         : law(p)
         , cutoff(p.limiting_strain_rate)
+        , smooth(p.rigid_zone == parameters::RigidZone::smooth)
         , bulk(p.volumetric_penalty * p.strength_coefficient /
                p.reference_strain_rate)
     {}
@@ -25,6 +26,33 @@ namespace formsolve
       const double                rate = std::sqrt(2. / 3. * (e * e));
       out.equivalent_strain_rate       = rate;
       out.strain_rate_deviator         = e;
+      out.dual_rate                    = rate;
+
+      if (smooth)
+        {
+          // s_bar = s r/rho, rho = sqrt(r^2 + r_c^2) (eq. 3a): s' = 2/3
+          // (s/rho) D'. Linear viscous for r << r_c, plastic for r >> r_c,
+          // smooth in between, so that Newton's tangent does not jump where
+          // points cross r_c.
+          const double rho      = std::sqrt(rate * rate + cutoff * cutoff);
+          const double strain   = strain_old + dt * rate;
+          const double s        = law.value(strain, rho);
+          out.dual_rate         = rho;
+          out.flow_stress       = s * rate / rho;
+          out.viscosity         = s / (3. * rho);
+          out.deviatoric_stress = 2. * out.viscosity * e;
+          out.beta              = 0;
+          if (newton && rate > 0)
+            {
+              // d(s/rho)/dr = ds/(rho) - s r/rho^3, ds the total derivative
+              // of s along eps = eps_n + dt r and rho(r); dr/dD' = 2/3 D'/r.
+              const double ds = dt * law.d_strain(strain, rho) +
+                                law.d_rate(strain, rho) * rate / rho;
+              out.beta_plastic = -(4. / 9.) * s / (rho * rho * rho);
+              out.beta = out.beta_plastic + (4. / 9.) * ds / (rho * rate);
+            }
+          return out;
+        }
 
       if (rate <= cutoff)
         {

@@ -82,9 +82,20 @@ namespace formsolve
         "Limiting strain rate",
         "1e-4",
         Double(),
-        "Below this equivalent strain rate (1/s) the material is "
-        "treated as linear viscous (rigid zones): the effective "
-        "viscosity is frozen at its value at this rate.");
+        "The cutoff rate (1/s) below which the material behaves as a "
+        "stiff linear viscous body (rigid zones); see Rigid zone.");
+      prm.declare_entry(
+        "Rigid zone",
+        "smooth",
+        Selection("smooth|piecewise"),
+        "How the flow law meets the rigid zone, with r the equivalent "
+        "strain rate and r_c the Limiting strain rate. smooth: the "
+        "equivalent stress is s r/sqrt(r^2 + r_c^2), linear viscous well "
+        "below r_c and the flow stress s well above it, with no kink "
+        "(doc/theory.md eq. 3a). piecewise: linear viscous with the "
+        "viscosity frozen at r_c below r_c, the flow stress above; the kink "
+        "at r_c costs Newton iterations while points cross it (6-9 % more "
+        "on the quarter cup, doc/convergence.md).");
       prm.declare_entry("Volumetric penalty",
                         "1e4",
                         Double(),
@@ -140,16 +151,18 @@ namespace formsolve
       rate_sensitivity      = prm.get_double("Rate sensitivity");
       reference_strain_rate = prm.get_double("Reference strain rate");
       limiting_strain_rate  = prm.get_double("Limiting strain rate");
-      volumetric_penalty    = prm.get_double("Volumetric penalty");
-      oyane_a               = prm.get_double("Oyane a");
-      oyane_b               = prm.get_double("Oyane b");
-      cockcroft_latham      = prm.get_double("Cockcroft-Latham critical value");
-      const auto f          = prm.get("Fracture criterion");
-      fracture              = f == "oyane" ? FractureCriterion::oyane
-                              : f == "cockcroft-latham" ? FractureCriterion::cockcroft_latham
-                                                        : FractureCriterion::none;
-      forming_limit_table   = parse_table(prm.get("Forming limit table"));
-      safety_margin         = prm.get_double("Safety margin");
+      rigid_zone         = prm.get("Rigid zone") == "smooth" ? RigidZone::smooth
+                                                             : RigidZone::piecewise;
+      volumetric_penalty = prm.get_double("Volumetric penalty");
+      oyane_a            = prm.get_double("Oyane a");
+      oyane_b            = prm.get_double("Oyane b");
+      cockcroft_latham   = prm.get_double("Cockcroft-Latham critical value");
+      const auto f       = prm.get("Fracture criterion");
+      fracture           = f == "oyane"              ? FractureCriterion::oyane
+                           : f == "cockcroft-latham" ? FractureCriterion::cockcroft_latham
+                                                     : FractureCriterion::none;
+      forming_limit_table = parse_table(prm.get("Forming limit table"));
+      safety_margin       = prm.get_double("Safety margin");
       prm.leave_subsection();
     }
 

@@ -119,8 +119,9 @@ namespace formsolve
                   w_rate = dual->trial(cell->active_cell_index(),
                                        q,
                                        m.strain_rate_deviator,
-                                       material.cutoff_rate()) *
-                           m.equivalent_strain_rate;
+                                       material.cutoff_rate(),
+                                       material.smooth_rigid_zone()) *
+                           m.dual_rate;
                 // d s'/dD = 2 mu P_dev + beta D' (x) D'  (doc/theory.md,
                 // eq. 4, 4b): s = B : D', u = beta_h/2 s + beta_p t with
                 // t = B : w.

@@ -160,7 +160,7 @@ namespace formsolve
     template <int dim>
     double FormingSystem<dim>::assemble_exact(const VectorType &v)
     {
-      dual.restart(assembler.cutoff_rate());
+      dual.restart(assembler.cutoff_rate(), assembler.smooth_rigid_zone());
       exact_tangent  = true;
       const double r = assemble(v, true);
       exact_tangent  = false;
@@ -361,8 +361,22 @@ namespace formsolve
     void FormingSystem<dim>::accept_step()
     {
       w_accepted = w_trial;
-      if (use_dual)
-        dual.accept();
+      if (!use_dual)
+        return;
+      if (prm.nonlinear.log_iterations)
+        {
+          // Rigid-plastic transitions: a category of hard steps
+          // (doc/convergence.md).
+          rigid_counts   = dual.rigid_transitions(assembler.cutoff_rate());
+          const int ierr = MPI_Allreduce(MPI_IN_PLACE,
+                                         rigid_counts.data(),
+                                         3,
+                                         MPI_UNSIGNED,
+                                         MPI_SUM,
+                                         state.comm);
+          AssertThrowMPI(ierr);
+        }
+      dual.accept();
     }
 
     template <int dim>
@@ -452,6 +466,9 @@ namespace formsolve
                      std::to_string(opened[t]);
       if (!changes.empty())
         s << "  pairs: " << changes;
+      if (use_dual && prm.nonlinear.log_iterations)
+        s << "  rigid points: " << rigid_counts[0] << " (+" << rigid_counts[1]
+          << "/-" << rigid_counts[2] << ")";
       if (holder_controlled())
         s << "  holder: w=" << w_accepted
           << " mm/s, F-F_set=" << -holder.residual() << " N";

@@ -29,6 +29,10 @@ namespace formsolve
       // The part of beta from the flow law's direction, -(4/9) s/rate^3,
       // which the stress-velocity linearisation replaces (0: rigid zone).
       double beta_plastic = 0;
+      // The rate r_w that scales the dual direction w = D'/r_w of the
+      // stress-velocity linearisation: the equivalent strain rate
+      // (piecewise law), sqrt(rate^2 + cutoff^2) (smooth law).
+      double dual_rate = 0;
     };
 
     class RigidViscoplastic
@@ -47,12 +51,15 @@ namespace formsolve
       double bulk_viscosity() const { return bulk; }
       /// The strain rate below which the law is linear (rigid zone), 1/s.
       double cutoff_rate() const { return cutoff; }
+      /// Material/Rigid zone = smooth (doc/theory.md eq. 3a).
+      bool smooth_rigid_zone() const { return smooth; }
 
       const FlowStress &flow_stress() const { return law; }
 
     private:
       FlowStress law;
       double     cutoff; // limiting strain rate
+      bool       smooth;
       double     bulk;
     };
   } // namespace material

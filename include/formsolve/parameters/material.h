@@ -20,15 +20,23 @@ namespace formsolve
       none
     };
 
+    /// The flow law below the limiting strain rate (rigid zones).
+    enum class RigidZone
+    {
+      smooth,   // s rate/sqrt(rate^2 + cutoff^2): no kink at the cutoff
+      piecewise // linear viscous below the cutoff, plastic above
+    };
+
     struct Material
     {
-      double strength_coefficient  = 829;   // K (MPa)
-      double hardening_exponent    = 0.2;   // n
-      double prestrain             = 0.002; // eps_0
-      double rate_sensitivity      = 0;     // m
-      double reference_strain_rate = 1;     // 1/s
-      double limiting_strain_rate  = 1e-4;  // 1/s, rigid-zone cutoff
-      double volumetric_penalty    = 1e4;   // alpha (-)
+      double    strength_coefficient  = 829;   // K (MPa)
+      double    hardening_exponent    = 0.2;   // n
+      double    prestrain             = 0.002; // eps_0
+      double    rate_sensitivity      = 0;     // m
+      double    reference_strain_rate = 1;     // 1/s
+      double    limiting_strain_rate  = 1e-4;  // 1/s, rigid-zone cutoff
+      RigidZone rigid_zone            = RigidZone::smooth;
+      double    volumetric_penalty    = 1e4; // alpha (-)
 
       // Ductile fracture (material B of the reference scene by default).
       double            oyane_a          = 0.020; // (-)

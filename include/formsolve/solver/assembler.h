@@ -73,6 +73,7 @@ namespace formsolve
 
       /// The strain rate below which the flow law is linear (1/s).
       double cutoff_rate() const { return material.cutoff_rate(); }
+      bool   smooth_rigid_zone() const { return material.smooth_rigid_zone(); }
 
       /// After convergence: integrate strain, thickness strain and damage,
       /// store stresses.

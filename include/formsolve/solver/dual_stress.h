@@ -11,6 +11,7 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <array>
 #include <vector>
 
 namespace formsolve
@@ -34,19 +35,28 @@ namespace formsolve
       /// sqrt(2/3 w:w)) at strain-rate deviator @p e of a trial iterate,
       /// from the linearisation at the accepted iterate; kept as the trial
       /// value of the point. @p cutoff: the rate below which the law is
-      /// linear (rigid zone).
+      /// linear (rigid zone); @p smooth: the smooth law of Material/Rigid
+      /// zone, where w = D'/sqrt(rate^2 + cutoff^2) everywhere.
       Tensor trial(const unsigned int cell,
                    const unsigned int q,
                    const Tensor      &e,
-                   const double       cutoff);
+                   const double       cutoff,
+                   const bool         smooth);
 
       /// The last trial values become the linearisation point.
       void accept() { accepted = trials; }
+
+      /// For the iteration log, before accept(): the points whose trial
+      /// strain rate is at most @p cutoff (rigid), and how many points
+      /// became rigid and plastic since the accepted iterate ({rigid, to
+      /// rigid, to plastic}; no changes at a step's first iterate). This
+      /// rank's points only.
+      std::array<unsigned int, 3> rigid_transitions(const double cutoff) const;
       /// Forget the trials (a line search that is abandoned) and set every
       /// dual direction to its value at the accepted strain rate, e/rate
       /// (e/@p cutoff in rigid zones): the next tangent linearises about the
       /// accepted iterate itself.
-      void restart(const double cutoff);
+      void restart(const double cutoff, const bool smooth);
 
     private:
       struct PointState

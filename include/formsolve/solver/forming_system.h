@@ -16,6 +16,7 @@
 #include <formsolve/solver/linear_solver.h>
 #include <formsolve/solver/newton_solver.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -136,8 +137,12 @@ namespace formsolve
       std::vector<bool>   last_active;
       /// Logging only: the status per contact record (node, tool) at the
       /// last search, and the pairs each tool closed/opened since then.
-      std::vector<char>             last_record_status;
-      std::vector<unsigned int>     closed, opened;
+      std::vector<char>         last_record_status;
+      std::vector<unsigned int> closed, opened;
+      /// For the iteration log: quadrature points in the rigid zone at the
+      /// accepted iterate, and those that became rigid and plastic in the
+      /// last step (summed over ranks).
+      std::array<unsigned int, 3>   rigid_counts{{0, 0, 0}};
       std::unique_ptr<LinearSolver> linear_solver;
       DualStress                    dual;
       const bool                    use_dual;

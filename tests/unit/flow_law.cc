@@ -1,0 +1,128 @@
+// The flow law at a point (material/rigid_viscoplastic.cc), both rigid-zone
+// laws (Material/Rigid zone), with and without rate sensitivity:
+// - smooth: the equivalent stress equals s r/sqrt(r^2 + r_c^2) (eq. 3a) and
+//   tends to s well above r_c and to s r/r_c well below it;
+// - piecewise: s above r_c, s r/r_c below, continuous at r_c;
+// - Newton's tangent 2 mu P_dev + beta D' (x) D' equals the central finite
+//   difference of the deviatoric stress (hardening through eps_n + dt r
+//   included) to 1e-5 relative, on both sides of r_c and across it for the
+//   smooth law.
+#include <formsolve/material/rigid_viscoplastic.h>
+#include <formsolve/parameters/material.h>
+
+#include "check.h"
+
+#include <cmath>
+#include <string>
+
+using namespace dealii;
+using namespace formsolve;
+
+namespace
+{
+  // A deviatoric strain rate of equivalent rate r (plane strain in x-y plus
+  // a little shear, so that D' (x) D' is not diagonal).
+  SymmetricTensor<2, 3> rate_of(const double r)
+  {
+    SymmetricTensor<2, 3> d;
+    d[0][0] = 1;
+    d[1][1] = -0.6;
+    d[2][2] = -0.4;
+    d[0][1] = 0.3;
+    d[1][2] = -0.2;
+    return d * (r / std::sqrt(2. / 3. * (d * d)));
+  }
+
+  double norm(const SymmetricTensor<2, 3> &t)
+  {
+    return std::sqrt(t * t);
+  }
+
+  void check_tangent(const material::RigidViscoplastic &law,
+                     const std::string                 &name,
+                     const double                       r,
+                     const double                       strain,
+                     const double                       dt)
+  {
+    const auto D = rate_of(r);
+    const auto m = law.evaluate(D, strain, dt, true);
+    // A direction with a component along D' and one across it.
+    SymmetricTensor<2, 3> dD;
+    dD[0][0] = 0.2;
+    dD[1][1] = 0.5;
+    dD[2][2] = -0.7;
+    dD[0][2] = 0.4;
+    dD *= r;
+    const double                h  = 1e-5;
+    const auto                  sp = law.evaluate(D + h * dD, strain, dt, true);
+    const auto                  sm = law.evaluate(D - h * dD, strain, dt, true);
+    const SymmetricTensor<2, 3> fd =
+      (sp.deviatoric_stress - sm.deviatoric_stress) / (2 * h);
+    const SymmetricTensor<2, 3> e = deviator(D);
+    const SymmetricTensor<2, 3> tangent =
+      2 * m.viscosity * deviator(dD) + m.beta * (e * dD) * e;
+    test::close(name + ", r = " + std::to_string(r) +
+                  ": tangent against finite differences",
+                norm(tangent - fd) / norm(fd),
+                0,
+                1e-5);
+  }
+} // namespace
+
+int main()
+{
+  parameters::Material p;
+  p.limiting_strain_rate = 1e-4;
+  const double rc = p.limiting_strain_rate, strain = 0.1, dt = 0.25;
+
+  for (const double m : {0., 0.02})
+    {
+      p.rate_sensitivity    = m;
+      const std::string tag = "m = " + std::to_string(m);
+      // Smooth law.
+      p.rigid_zone = parameters::RigidZone::smooth;
+      const material::RigidViscoplastic smooth(p);
+      const material::FlowStress        flow(p);
+      for (const double r : {1e-6, 3e-5, 1e-4, 3e-4, 1e-2, 1.})
+        {
+          const double rho = std::sqrt(r * r + rc * rc);
+          const auto   out = smooth.evaluate(rate_of(r), strain, dt, false);
+          test::close("smooth, " + tag + ", r = " + std::to_string(r) +
+                        ": s_bar = s r/sqrt(r^2 + r_c^2)",
+                      out.flow_stress /
+                        (flow.value(strain + dt * r, rho) * r / rho),
+                      1,
+                      1e-12);
+          check_tangent(smooth, "smooth, " + tag, r, strain, dt);
+        }
+      // Its limits: the flow stress well above r_c, linear viscous below.
+      const auto high = smooth.evaluate(rate_of(1.), strain, dt, false);
+      test::close("smooth, " + tag + ": s_bar/s at r = 1e4 r_c",
+                  high.flow_stress / flow.value(strain + dt, 1.),
+                  1,
+                  1e-8);
+      const auto low = smooth.evaluate(rate_of(1e-7), strain, dt, false);
+      test::close("smooth, " + tag +
+                    ": viscosity at r = 1e-3 r_c over s/(3 r_c)",
+                  low.viscosity / (flow.value(strain, rc) / (3 * rc)),
+                  1,
+                  2e-6);
+
+      // Piecewise law: continuous at r_c, tangent exact on each side.
+      p.rigid_zone = parameters::RigidZone::piecewise;
+      const material::RigidViscoplastic piecewise(p);
+      const double                      below =
+        piecewise.evaluate(rate_of(rc * (1 - 1e-9)), strain, dt, false)
+          .flow_stress;
+      const double above =
+        piecewise.evaluate(rate_of(rc * (1 + 1e-9)), strain, dt, false)
+          .flow_stress;
+      test::close("piecewise, " + tag + ": continuous at r_c",
+                  below / above,
+                  1,
+                  1e-8);
+      for (const double r : {3e-5, 1e-2, 1.})
+        check_tangent(piecewise, "piecewise, " + tag, r, strain, dt);
+    }
+  return test::result();
+}
