@@ -140,8 +140,8 @@ namespace formsolve
       std::vector<char>         last_record_status;
       std::vector<unsigned int> closed, opened;
       /// For the iteration log: quadrature points in the rigid zone at the
-      /// accepted iterate, and those that became rigid and plastic in the
-      /// last step (summed over ranks).
+      /// accepted iterate, and those that became rigid and plastic since
+      /// the previous iterate (summed over ranks).
       std::array<unsigned int, 3>   rigid_counts{{0, 0, 0}};
       std::unique_ptr<LinearSolver> linear_solver;
       DualStress                    dual;
