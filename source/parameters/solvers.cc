@@ -185,6 +185,16 @@ namespace formsolve
         "the potential, then halving of the bracket (doc/theory.md section "
         "8).");
       prm.declare_entry(
+        "Line search memory",
+        "3",
+        Integer(1, 20),
+        "Nonmonotone line search: a trial is measured against the largest "
+        "merit (|r| with the holder's force residual, N) of this many "
+        "previous iterates, the current one included (Grippo, Lampariello "
+        "and Lucidi). 1 is the monotone search: the merit must fall at "
+        "every iteration. Larger values let Newton cross a rise of |r| "
+        "while a plastic zone forms (doc/theory.md section 8).");
+      prm.declare_entry(
         "Picard iterations",
         "0",
         Integer(0),
@@ -223,6 +233,7 @@ namespace formsolve
                                 ? Predictor::keep_contact
                                 : Predictor::previous_velocity;
       max_line_search_steps = prm.get_integer("Max line search steps");
+      line_search_memory    = prm.get_integer("Line search memory");
       picard_iterations     = prm.get_integer("Picard iterations");
       picard_fallback       = prm.get_bool("Picard fallback");
       log_iterations        = prm.get_bool("Log iterations");

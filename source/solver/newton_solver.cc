@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <iomanip>
 #include <sstream>
 
@@ -36,6 +37,12 @@ namespace formsolve
         return std::hypot(r_body, system.extra_residual_norm());
       };
       double m = merit(r);
+      // Nonmonotone reference: the largest merit of the last
+      // Line search memory iterates (doc/theory.md section 8).
+      std::deque<double> merits{m};
+      const auto         reference = [&merits]() {
+        return *std::max_element(merits.begin(), merits.end());
+      };
       log << "      it  0    |r|/|f|=" << std::scientific
           << std::setprecision(2) << r / std::max(system.force_scale(), 1e-300)
           << std::defaultfloat << system.iteration_info() << std::endl;
@@ -112,6 +119,7 @@ namespace formsolve
           const double g0    = system.directional_derivative(dv);
           double       alpha = 1, r_trial = 0, m_trial = 0;
           double       a_lo = 0, a_hi = 1, g_hi = 0;
+          const double m_ref = reference();
           for (unsigned int ls = 0;; ++ls)
             {
               trial = v;
@@ -122,9 +130,9 @@ namespace formsolve
                                            : system.assemble_residual(trial);
               m_trial        = merit(r_trial);
               const double g = system.directional_derivative(dv);
-              const bool   descends = m_trial < m && g < 0;
+              const bool   descends = m_trial < m_ref && g < 0;
               if (!(g0 < 0) ||
-                  (m_trial < m && std::abs(g) <= 0.5 * std::abs(g0)) ||
+                  (m_trial < m_ref && std::abs(g) <= 0.5 * std::abs(g0)) ||
                   (descends && alpha == 1))
                 break;
               if (descends)
@@ -223,11 +231,14 @@ namespace formsolve
               if (theta <= 0.5)
                 left = theta / (1 - theta);
             }
-          last_full       = full;
-          last_step       = step;
-          last_xstep      = xstep;
-          r               = r_trial;
-          m               = merit(r);
+          last_full  = full;
+          last_step  = step;
+          last_xstep = xstep;
+          r          = r_trial;
+          m          = merit(r);
+          merits.push_back(m);
+          if (merits.size() > prm.line_search_memory)
+            merits.pop_front();
           report.residual = r / std::max(scale, 1e-300);
           log << "      it " << std::setw(2) << it << (picard ? " P" : " N")
               << "  |r|/|f|=" << std::scientific << std::setprecision(2)
@@ -247,8 +258,9 @@ namespace formsolve
                 report.corrected = true;
                 r                = r_new;
                 m                = merit(r);
-                report.residual  = r / std::max(scale, 1e-300);
-                last_full        = false;
+                merits.assign(1, m); // new equations: a new reference
+                report.residual = r / std::max(scale, 1e-300);
+                last_full       = false;
                 log << "      strict check: factors corrected, |r|/|f|="
                     << std::scientific << std::setprecision(2)
                     << report.residual << std::defaultfloat << std::endl;

@@ -68,10 +68,13 @@ namespace formsolve
       CorrectionMeasure correction_measure    = CorrectionMeasure::contraction;
       Predictor         predictor             = Predictor::keep_contact;
       unsigned int      max_line_search_steps = 6;
-      double            forcing               = 0; // inexact Newton; 0: off
-      unsigned int      picard_iterations     = 0;
-      bool              picard_fallback       = true;
-      bool              log_iterations        = false;
+      /// Nonmonotone line search: a trial must beat the largest merit of
+      /// the last line_search_memory iterates; 1 is monotone.
+      unsigned int line_search_memory = 3;
+      double       forcing            = 0; // inexact Newton; 0: off
+      unsigned int picard_iterations  = 0;
+      bool         picard_fallback    = true;
+      bool         log_iterations     = false;
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);
