@@ -224,6 +224,14 @@ def speed_panels(axes, runs, ok, tag_of, xlabel):
             ax.text(0.98, 0.98, "failed at once:\n" + "\n".join(early), transform=ax.transAxes, fontsize=7,
                     ha="right", va="top", color="tab:red")
         ax.set_xscale("log")
+        # Plain numbers: over less than a decade matplotlib labels the
+        # minor ticks as 2.2x10^0, 2.4x10^0, ..., which overlap.
+        from matplotlib.ticker import FuncFormatter
+
+        plain = FuncFormatter(lambda v, _: "%g" % v)
+        ax.xaxis.set_major_formatter(plain)
+        ax.xaxis.set_minor_formatter(plain)
+        ax.tick_params(axis="x", which="minor", labelsize=7)
         ax.set_yscale("log")
         ax.set_xlabel(xlabel)
         ax.set_ylabel(label)
