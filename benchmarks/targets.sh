@@ -58,6 +58,8 @@ for model in ["axisymmetric", "quarter"]:
         ratios = [a / b for a in strict for b in wall]
         rows.append(dict(model=model, method=m, newton=int(s1["newton_iterations"]),
                          per_step=int(s1["newton_iterations"]) / int(s1["steps"]),
+                         # the first step's iterations on the coarser mesh, not in newton
+                         coarse=int(s1.get("coarse_start_iterations", 0)),
                          wall_1=wall[0], wall_2=wall[1],
                          strict_over_this_min=min(ratios), strict_over_this_max=max(ratios),
                          max_penetration_mm=float(s1["max_penetration"]),

@@ -213,30 +213,59 @@ namespace formsolve
         "Print one line per nonlinear iteration: residual, "
         "correction, line-search factor, contact-set changes with the "
         "pairs each tool closed (+) and opened (-).");
+      prm.declare_entry(
+        "First step start",
+        "coarser mesh",
+        Selection("rest|coarser mesh"),
+        "Where Newton starts in the first step, when the sheet is at rest. "
+        "rest: zero velocity. coarser mesh: the first step is solved first "
+        "on the mesh one level coarser everywhere (in the plane and through "
+        "the thickness), and its velocity, holder velocity and contact "
+        "state, interpolated onto the mesh of the run, start the step there. "
+        "The first step from rest needs more Newton iterations the finer the "
+        "mesh; from the coarser solution it needs 5-9 (doc/convergence.md, "
+        "\"The first step from a coarser mesh\"). Used only where the "
+        "coarser mesh keeps the bending: see Coarse cell size limit; "
+        "otherwise, and when the coarse solve fails, the step starts from "
+        "rest.");
+      prm.declare_entry(
+        "Coarse cell size limit",
+        "2",
+        Double(0),
+        "First step start = coarser mesh is used only when the cells of the "
+        "coarser mesh are on average no longer than this many initial sheet "
+        "thicknesses in the plane (sheet thicknesses, -). On coarser meshes "
+        "the coarse solution bends the sheet over the punch nose too "
+        "differently to be a good start (measured: 1.5 thicknesses helps, "
+        "3 hurts).");
       prm.leave_subsection();
     }
 
     void NonlinearSolver::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Nonlinear solver");
-      tangent               = prm.get("Tangent") == "newton" ? Tangent::newton
-                                                             : Tangent::stress_velocity;
-      symmetrise_friction   = prm.get("Friction tangent") == "symmetrised";
-      max_iterations        = prm.get_integer("Max iterations");
-      residual_tolerance    = prm.get_double("Residual tolerance");
-      correction_tolerance  = prm.get_double("Correction tolerance");
-      forcing               = prm.get_double("Forcing");
-      correction_measure    = prm.get("Correction measure") == "contraction"
-                                ? CorrectionMeasure::contraction
-                                : CorrectionMeasure::last;
-      predictor             = prm.get("Predictor") == "keep contact"
-                                ? Predictor::keep_contact
-                                : Predictor::previous_velocity;
-      max_line_search_steps = prm.get_integer("Max line search steps");
-      line_search_memory    = prm.get_integer("Line search memory");
-      picard_iterations     = prm.get_integer("Picard iterations");
-      picard_fallback       = prm.get_bool("Picard fallback");
-      log_iterations        = prm.get_bool("Log iterations");
+      tangent                = prm.get("Tangent") == "newton" ? Tangent::newton
+                                                              : Tangent::stress_velocity;
+      symmetrise_friction    = prm.get("Friction tangent") == "symmetrised";
+      max_iterations         = prm.get_integer("Max iterations");
+      residual_tolerance     = prm.get_double("Residual tolerance");
+      correction_tolerance   = prm.get_double("Correction tolerance");
+      forcing                = prm.get_double("Forcing");
+      correction_measure     = prm.get("Correction measure") == "contraction"
+                                 ? CorrectionMeasure::contraction
+                                 : CorrectionMeasure::last;
+      predictor              = prm.get("Predictor") == "keep contact"
+                                 ? Predictor::keep_contact
+                                 : Predictor::previous_velocity;
+      max_line_search_steps  = prm.get_integer("Max line search steps");
+      line_search_memory     = prm.get_integer("Line search memory");
+      picard_iterations      = prm.get_integer("Picard iterations");
+      picard_fallback        = prm.get_bool("Picard fallback");
+      log_iterations         = prm.get_bool("Log iterations");
+      first_step_start       = prm.get("First step start") == "coarser mesh"
+                                 ? FirstStepStart::coarser_mesh
+                                 : FirstStepStart::rest;
+      coarse_cell_size_limit = prm.get_double("Coarse cell size limit");
       prm.leave_subsection();
     }
 

@@ -228,6 +228,10 @@ namespace formsolve
         }
       if (!resume && prm.output.interval > 0)
         write_output();
+      if (!resume && state.step == 0 &&
+          prm.nonlinear.first_step_start ==
+            parameters::FirstStepStart::coarser_mesh)
+        start_from_coarser_mesh(summary, seconds);
 
       auto save_checkpoint = [&]() {
         TimerOutput::Scope t(timer, "checkpoint");

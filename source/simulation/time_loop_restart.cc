@@ -57,6 +57,8 @@ namespace formsolve
          exact_text(s.factorisation_memory_mb)},
         {"summary.factor_entries", exact_text(s.factor_entries)},
         {"summary.cutbacks", std::to_string(s.cutbacks)},
+        {"summary.coarse_start_iterations",
+         std::to_string(s.coarse_start_iterations)},
         {"summary.newton_wall_time", exact_text(s.newton_wall_time)},
         {"summary.wall_time", exact_text(s.wall_time)},
         {"summary.n_dofs", exact_text(s.n_dofs)},
@@ -85,9 +87,13 @@ namespace formsolve
       s.matrix_assemblies = m.count("summary.matrix_assemblies")
                               ? std::stoul(m.at("summary.matrix_assemblies"))
                               : 0;
-      s.factorisations    = m.count("summary.factorisations")
-                              ? std::stoul(m.at("summary.factorisations"))
-                              : 0;
+      s.coarse_start_iterations =
+        m.count("summary.coarse_start_iterations")
+          ? std::stoul(m.at("summary.coarse_start_iterations"))
+          : 0;
+      s.factorisations = m.count("summary.factorisations")
+                           ? std::stoul(m.at("summary.factorisations"))
+                           : 0;
       s.factorisation_memory_mb =
         m.count("summary.factorisation_memory_mb")
           ? std::stod(m.at("summary.factorisation_memory_mb"))

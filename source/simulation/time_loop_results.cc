@@ -112,6 +112,7 @@ namespace formsolve
         << "\ncells = " << state.tria.n_global_active_cells()
         << "\nsteps = " << summary.steps
         << "\nnewton_iterations = " << summary.newton_iterations
+        << "\ncoarse_start_iterations = " << summary.coarse_start_iterations
         << "\nlinear_iterations = " << summary.linear_iterations
         << "\nmatrix_assemblies = " << summary.matrix_assemblies
         << "\nfactorisations = " << summary.factorisations

@@ -28,7 +28,7 @@ namespace formsolve
     {}
 
     template <int dim>
-    StepReport StepSolver<dim>::solve(const double max_dt)
+    StepReport StepSolver<dim>::solve(const double max_dt, const bool trial)
     {
       StepReport          report;
       const unsigned long assemblies = system.matrix_assemblies();
@@ -96,12 +96,15 @@ namespace formsolve
               report.dt        = dt;
               report.passes    = passes;
               report.cutbacks  = control.cutbacks();
-              control.accept(attempt.iterations);
+              if (!trial)
+                control.accept(attempt.iterations);
               return report;
             }
           report.failure = attempt.failure + " after " +
                            std::to_string(attempt.iterations) + " iterations";
           state.restore(start);
+          if (trial)
+            return report;
           const bool retry = control.reject();
           report.cutbacks  = control.cutbacks();
           if (!retry)

@@ -56,6 +56,14 @@ namespace formsolve
       keep_contact       // the same, with nodes in contact kept on their tool
     };
 
+    /// Where the first step's Newton iteration starts (doc/theory.md
+    /// section 8b).
+    enum class FirstStepStart
+    {
+      rest,        // zero velocity
+      coarser_mesh // the step solved first on the mesh one level coarser
+    };
+
     struct NonlinearSolver
     {
       Tangent tangent = Tangent::stress_velocity;
@@ -70,11 +78,15 @@ namespace formsolve
       unsigned int      max_line_search_steps = 6;
       /// Nonmonotone line search: a trial must beat the largest merit of
       /// the last line_search_memory iterates; 1 is monotone.
-      unsigned int line_search_memory = 3;
-      double       forcing            = 0; // inexact Newton; 0: off
-      unsigned int picard_iterations  = 0;
-      bool         picard_fallback    = true;
-      bool         log_iterations     = false;
+      unsigned int   line_search_memory = 3;
+      double         forcing            = 0; // inexact Newton; 0: off
+      unsigned int   picard_iterations  = 0;
+      bool           picard_fallback    = true;
+      bool           log_iterations     = false;
+      FirstStepStart first_step_start   = FirstStepStart::coarser_mesh;
+      /// The coarser mesh is used only when its cells are on average no
+      /// longer than this many sheet thicknesses in the plane.
+      double coarse_cell_size_limit = 2;
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);

@@ -22,6 +22,7 @@
 #include <formsolve/solver/assembler.h>
 #include <formsolve/solver/step_solver.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -40,6 +41,9 @@ namespace formsolve
       double       factorisation_memory_mb = 0; // MUMPS, all ranks, largest
       double       factor_entries          = 0; // MUMPS, largest
       unsigned int cutbacks                = 0;
+      /// Newton iterations of the first step on the coarser mesh
+      /// (Nonlinear solver/First step start), not in newton_iterations.
+      unsigned int coarse_start_iterations = 0;
       double       wall_time               = 0;
       double       newton_wall_time = 0; // spent inside Newton iterations
       double       n_dofs           = 0; // largest over the run
@@ -87,7 +91,11 @@ namespace formsolve
       void write_output();
       /// Holder release and draw-through; the reason to end the run, or "".
       std::string check_events();
-      void        write_summary(RunSummary &summary) const;
+      /// Nonlinear solver/First step start = coarser mesh: the first step
+      /// solved on the coarser mesh, as the start of the real one.
+      void start_from_coarser_mesh(RunSummary                    &summary,
+                                   const std::function<double()> &seconds);
+      void write_summary(RunSummary &summary) const;
       /// Thickness, strains, zones, draw-in and damage maxima of the state.
       postprocess::FormingMeasures<dim> measure_forming();
       /// Whether the deciding criterion has reached 1 in this step; records

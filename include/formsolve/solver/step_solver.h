@@ -59,7 +59,11 @@ namespace formsolve
       /// state's velocity, contact state and holder velocity are those of
       /// the converged step (the geometry is not advanced yet); on failure
       /// at the minimum time step they are those of the start of the step.
-      StepReport solve(const double max_dt);
+      /// With @p trial, one try at the current time step and no step
+      /// control: the step control is left as it was, and a failed try is
+      /// undone and returned (a start for the real solve, e.g. on a
+      /// coarser mesh).
+      StepReport solve(const double max_dt, const bool trial = false);
 
       /// Forces and penetrations of the last converged step.
       contact::ContactStatistics<dim> statistics(const double dt) const;
