@@ -30,16 +30,18 @@ mkdir -p "$out"
 quarter=(--set "Geometry/Model=quarter" --set "Mesh refinement/Interval=0"
   --set "Mesh/Layers through thickness=4" --set "Mesh/Planform refinements=3")
 runs=()
+. "$root/benchmarks/from_rest.sh"
 for k in "${!exes[@]}"; do
   for model in axisymmetric quarter; do
     name=${tags[$k]}-$model
+    from_rest "${exes[$k]}" # as the figures in doc/
     sets=()
     [ "$model" = quarter ] && sets=("${quarter[@]}")
     echo "== $name" >&2
     rm -rf "${out:?}/$name"
     # The library next to an older build's executable is the one it was
     # built with (a copied build: LD_LIBRARY_PATH=its directory).
-    (cd "$root/prm" && LD_LIBRARY_PATH=$(dirname "${exes[$k]}") "${exes[$k]}" cup-drawing.prm "${sets[@]}" \
+    (cd "$root/prm" && LD_LIBRARY_PATH=$(dirname "${exes[$k]}") "${exes[$k]}" cup-drawing.prm ${rest[@]+"${rest[@]}"} "${sets[@]}" \
       --set "Contact/Penalty strategy=fixed" --set "Contact/Penalty factor=1e5" \
       --set "Output/Output interval=0" --set "Output/Revolved copy=false" \
       --set "Output/Report=false" --set "Output/Output directory=$out/$name") \

@@ -18,6 +18,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=${FORMSOLVE_EXE:-$root/build/formsolve}
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
+. "$root/benchmarks/from_rest.sh" && from_rest "$exe" # as the figures in doc/
 out=$root/results/contact-changes
 mkdir -p "$out"
 FORCE=${1:-}
@@ -35,7 +36,7 @@ for name in "${runs[@]}"; do
       sets=(--set "Geometry/Model=quarter" --set "Mesh refinement/Interval=0"
         --set "Mesh/Layers through thickness=4" --set "Mesh/Planform refinements=${level:-3}")
     fi
-    (cd "$root/prm" && "$exe" cup-drawing.prm ${sets[@]+"${sets[@]}"} \
+    (cd "$root/prm" && "$exe" cup-drawing.prm ${rest[@]+"${rest[@]}"} ${sets[@]+"${sets[@]}"} \
       --set "Contact/Penalty strategy=$strategy" \
       --set "Nonlinear solver/Log iterations=true" \
       --set "Output/Output interval=0" --set "Output/Revolved copy=false" \

@@ -11,6 +11,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=$root/build/formsolve
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
+. "$root/benchmarks/from_rest.sh" && from_rest "$exe" # as the figures in doc/
 out=$root/results/direct-solver
 mkdir -p "$out"
 FORCE=${1:-}
@@ -21,7 +22,7 @@ run() { # name ranks sets...
   if [ "$FORCE" = --force ] || [ ! -f "$out/$name/run-summary.txt" ]; then
     echo "== $name" >&2
     rm -rf "$out/$name"
-    (cd "$root/prm" && mpirun -np "$ranks" "$exe" cup-drawing.prm "$@" --set "Output/Output interval=0" \
+    (cd "$root/prm" && mpirun -np "$ranks" "$exe" cup-drawing.prm ${rest[@]+"${rest[@]}"} "$@" --set "Output/Output interval=0" \
       --set "Output/Revolved copy=false" --set "Output/Output directory=$out/$name") \
       > "$out/$name.log" 2>&1 || { tail -3 "$out/$name.log"; exit 1; }
   fi

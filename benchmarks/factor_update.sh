@@ -11,6 +11,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=${FORMSOLVE_EXE:-$root/build/formsolve}
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
+. "$root/benchmarks/from_rest.sh" && from_rest "$exe" # as the figures in doc/
 out=$root/results/factor-update
 mkdir -p "$out"
 FORCE=${1:-}
@@ -28,7 +29,7 @@ for model in axisymmetric quarter; do
       echo "== $name" >&2
       sets=()
       [ "$model" = quarter ] && sets=("${quarter[@]}")
-      (cd "$root/prm" && "$exe" cup-drawing.prm ${sets[@]+"${sets[@]}"} \
+      (cd "$root/prm" && "$exe" cup-drawing.prm ${rest[@]+"${rest[@]}"} ${sets[@]+"${sets[@]}"} \
         --set "Contact/Penalty strategy=$strategy" \
         --set "Contact/Factor update=$update" \
         --set "Time stepping/Time step=$dt" \

@@ -18,6 +18,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=${FORMSOLVE_EXE:-$root/build/formsolve}
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
+. "$root/benchmarks/from_rest.sh" && from_rest "$exe" # as the figures in doc/
 out=$root/results/full-draw-262k
 extra=()
 if [ "${1:-}" = reuse ]; then
@@ -42,7 +43,7 @@ mkdir -p "$out"
 export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 git -C "$root" rev-parse --short HEAD > "$out/commit"
 cd "$root/prm"
-/usr/bin/time -v mpirun -np 2 "$exe" cup-drawing.prm \
+/usr/bin/time -v mpirun -np 2 "$exe" cup-drawing.prm ${rest[@]+"${rest[@]}"} \
   --set "Geometry/Model=quarter" --set "Mesh refinement/Interval=0" \
   --set "Mesh/Layers through thickness=6" --set "Mesh/Planform refinements=6" \
   --set "Output/Output directory=$out/run" --set "Output/Revolved copy=false" \

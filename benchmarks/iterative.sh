@@ -15,6 +15,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=$root/build/formsolve
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
+. "$root/benchmarks/from_rest.sh" && from_rest "$exe" # as the figures in doc/
 out=$root/results/iterative
 mkdir -p "$out"
 FORCE=${1:-}
@@ -28,7 +29,7 @@ run() { # name level layers sets...
   if [ "$FORCE" = --force ] || [ ! -f "$out/$name/run-summary.txt" ]; then
     echo "== $name" >&2
     rm -rf "$out/$name"
-    (cd "$root/prm" && "$exe" cup-drawing.prm --set "Geometry/Model=quarter" \
+    (cd "$root/prm" && "$exe" cup-drawing.prm ${rest[@]+"${rest[@]}"} --set "Geometry/Model=quarter" \
       --set "Mesh refinement/Interval=0" --set "Mesh/Layers through thickness=$layers" \
       --set "Mesh/Planform refinements=$level" --set "Contact/Penalty strategy=fixed" \
       --set "Tools/Punch/Stroke=0.25" --set "Time stepping/End of run=stroke" \

@@ -11,6 +11,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=$root/build/formsolve
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
+. "$root/benchmarks/from_rest.sh" && from_rest "$exe" # as the figures in doc/
 out=$root/results/low-rank
 mkdir -p "$out"
 FORCE=${1:-}
@@ -21,7 +22,7 @@ run() { # name level stroke tolerance
   if [ "$FORCE" = --force ] || [ ! -f "$out/$name/run-summary.txt" ]; then
     echo "== $name" >&2
     rm -rf "$out/$name"
-    (cd "$root/prm" && "$exe" cup-drawing.prm --set "Geometry/Model=quarter" \
+    (cd "$root/prm" && "$exe" cup-drawing.prm ${rest[@]+"${rest[@]}"} --set "Geometry/Model=quarter" \
       --set "Mesh refinement/Interval=0" --set "Mesh/Layers through thickness=4" \
       --set "Mesh/Planform refinements=$level" --set "Contact/Penalty strategy=fixed" \
       --set "Tools/Punch/Stroke=$stroke" --set "Time stepping/End of run=stroke" \

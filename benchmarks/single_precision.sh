@@ -13,6 +13,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=${FORMSOLVE_EXE:-$root/build/formsolve}
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
+. "$root/benchmarks/from_rest.sh" && from_rest "$exe" # as the figures in doc/
 out=$root/results/single-precision
 mkdir -p "$out"
 FORCE=""
@@ -27,7 +28,7 @@ run() { # name level precision reuse-tolerance
   if [ "$FORCE" = --force ] || [ ! -f "$out/$name/run-summary.txt" ]; then
     echo "== $name" >&2
     rm -rf "${out:?}/$name"
-    (cd "$root/prm" && mpirun -np 2 "$exe" cup-drawing.prm \
+    (cd "$root/prm" && mpirun -np 2 "$exe" cup-drawing.prm ${rest[@]+"${rest[@]}"} \
       --set "Geometry/Model=quarter" --set "Mesh refinement/Interval=0" \
       --set "Mesh/Layers through thickness=4" --set "Mesh/Planform refinements=$level" \
       --set "Contact/Penalty strategy=fixed" --set "Tools/Punch/Stroke=0.5" \
