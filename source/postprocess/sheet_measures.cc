@@ -18,19 +18,6 @@ namespace formsolve
   {
     using namespace dealii;
 
-    namespace
-    {
-      constexpr double quantum = 1e-7; // mm: planform keys
-      constexpr double nan     = std::numeric_limits<double>::quiet_NaN();
-
-      // Records gathered on rank 0, flat vectors of doubles.
-      // node: key, side (0 bottom, 1 top, 2 rim), current position (dim)
-      // cell: corner keys, corner mid-plane points, major, minor, normal
-      // damage: corner keys, largest deciding damage in the cell
-      template <int dim>
-      constexpr unsigned int corners = dim == 2 ? 2 : 4;
-    } // namespace
-
     template <int dim>
     SheetMeasures<dim>::SheetMeasures(const parameters::Run &prm)
         : t0(prm.geometry.thickness)
@@ -51,9 +38,56 @@ namespace formsolve
     void SheetMeasures<dim>::measure(const simulation::State<dim>   &state,
                                      const material::DamageCriteria &damage)
     {
-      constexpr unsigned int nk = dim - 1, nc = corners<dim>;
+      const Records local  = local_records(state, damage);
+      const auto all_nodes = Utilities::MPI::gather(state.comm, local.nodes, 0);
+      const auto all_cells = Utilities::MPI::gather(state.comm, local.cells, 0);
+      const auto all_damages =
+        Utilities::MPI::gather(state.comm, local.damages, 0);
+
+      std::vector<double> packed; // the summary, broadcast from rank 0
+      cols.clear();
+      keys.clear();
+      if (Utilities::MPI::this_mpi_process(state.comm) == 0)
+        {
+          assemble_columns(all_nodes, all_cells, all_damages);
+          const SheetSummary<dim> s = summarise();
+          packed                    = {s.min_thickness,
+                                       s.min_thickness_radius,
+                                       s.max_thinning,
+                                       s.blank_radius};
+          for (unsigned int d = 0; d < dim; ++d)
+            packed.push_back(s.min_thickness_location[d]);
+          for (const auto n : s.zone_count)
+            packed.push_back(n);
+          packed.insert(packed.end(), s.rim_radius.begin(), s.rim_radius.end());
+          packed.insert(packed.end(), s.draw_in.begin(), s.draw_in.end());
+        }
+      packed            = Utilities::MPI::broadcast(state.comm, packed, 0);
+      std::size_t i     = 0;
+      sum.min_thickness = packed[i++];
+      sum.min_thickness_radius = packed[i++];
+      sum.max_thinning         = packed[i++];
+      sum.blank_radius         = packed[i++];
+      for (unsigned int d = 0; d < dim; ++d)
+        sum.min_thickness_location[d] = packed[i++];
+      for (auto &n : sum.zone_count)
+        n = static_cast<unsigned int>(packed[i++]);
+      const std::size_t directions = (packed.size() - i) / 2;
+      sum.rim_radius.assign(packed.begin() + i,
+                            packed.begin() + i + directions);
+      sum.draw_in.assign(packed.begin() + i + directions, packed.end());
+    }
+
+    template <int dim>
+    typename SheetMeasures<dim>::Records SheetMeasures<dim>::local_records(
+      const simulation::State<dim>   &state,
+      const material::DamageCriteria &damage) const
+    {
+      constexpr unsigned int nc  = n_corners;
       const double           tol = 1e-6 * t0;
-      std::vector<double>    nodes, cells, damages;
+      Records                r;
+      std::vector<double>   &nodes = r.nodes, &cells = r.cells,
+                          &damages = r.damages;
 
       // Surface nodes (top, bottom) and rim nodes between them.
       for (const auto &node : state.contact_set.nodes)
@@ -89,8 +123,8 @@ namespace formsolve
           damages.push_back(dmax);
           if (!(zb <= zm + tol && zm + tol < zt))
             continue;
-          const double                         zeta = (zm - zb) / (zt - zb);
-          std::array<Point<dim>, corners<dim>> m;
+          const double                      zeta = (zm - zb) / (zt - zb);
+          std::array<Point<dim>, n_corners> m;
           for (unsigned int c = 0; c < nc; ++c)
             m[c] = x[c] + zeta * (x[c + nc] - x[c]);
           double         major, minor;
@@ -142,200 +176,7 @@ namespace formsolve
             cells.push_back(normal[d]);
         }
 
-      const auto all_nodes   = Utilities::MPI::gather(state.comm, nodes, 0);
-      const auto all_cells   = Utilities::MPI::gather(state.comm, cells, 0);
-      const auto all_damages = Utilities::MPI::gather(state.comm, damages, 0);
-
-      std::vector<double> packed; // the summary, broadcast from rank 0
-      cols.clear();
-      keys.clear();
-      if (Utilities::MPI::this_mpi_process(state.comm) == 0)
-        {
-          struct Column
-          {
-            bool           top = false, bottom = false, rim = false;
-            Point<dim>     x_top, x_bottom, mid;
-            Tensor<1, dim> normal;
-            double         major = 0, minor = 0, damage = 0;
-            unsigned int   n = 0;
-          };
-          std::map<Key, Column> columns;
-          auto read_key = [&](const std::vector<double> &v, std::size_t &i) {
-            Key k;
-            for (unsigned int d = 0; d < nk; ++d)
-              k[d] = static_cast<long long>(v[i++]);
-            return k;
-          };
-          for (const auto &v : all_nodes)
-            for (std::size_t i = 0; i < v.size();)
-              {
-                auto        &c    = columns[read_key(v, i)];
-                const double side = v[i++];
-                Point<dim>   p;
-                for (unsigned int d = 0; d < dim; ++d)
-                  p[d] = v[i++];
-                if (side == 0.)
-                  c.bottom = true, c.x_bottom = p;
-                else if (side == 1.)
-                  c.top = true, c.x_top = p;
-                else
-                  c.rim = true;
-              }
-          for (const auto &v : all_cells)
-            for (std::size_t i = 0; i < v.size();)
-              {
-                std::array<Key, corners<dim>>        k;
-                std::array<Point<dim>, corners<dim>> p;
-                for (unsigned int c = 0; c < nc; ++c)
-                  {
-                    k[c] = read_key(v, i);
-                    for (unsigned int d = 0; d < dim; ++d)
-                      p[c][d] = v[i++];
-                  }
-                const double   major = v[i++], minor = v[i++];
-                Tensor<1, dim> n;
-                for (unsigned int d = 0; d < dim; ++d)
-                  n[d] = v[i++];
-                for (unsigned int c = 0; c < nc; ++c)
-                  {
-                    auto &col = columns[k[c]];
-                    col.mid += p[c];
-                    col.normal += n;
-                    col.major += major;
-                    col.minor += minor;
-                    ++col.n;
-                  }
-              }
-          for (const auto &v : all_damages)
-            for (std::size_t i = 0; i < v.size();)
-              {
-                std::array<Key, corners<dim>> k;
-                for (unsigned int c = 0; c < nc; ++c)
-                  k[c] = read_key(v, i);
-                const double d = v[i++];
-                for (unsigned int c = 0; c < nc; ++c)
-                  columns[k[c]].damage = std::max(columns[k[c]].damage, d);
-              }
-
-          double r_max = 0;
-          for (const auto &[k, c] : columns)
-            {
-              if (!c.top || !c.bottom)
-                continue;
-              SheetColumn<dim> s;
-              Point<dim>       X;
-              for (unsigned int d = 0; d < nk; ++d)
-                X[d] = k[d] * quantum;
-              s.reference_radius = dim == 2 ? X[0] : std::hypot(X[0], X[1]);
-              s.reference_angle =
-                dim == 2 ? 0. : std::atan2(X[1], X[0]) * 180. / M_PI;
-              const Tensor<1, dim> across = c.x_top - c.x_bottom;
-              if (c.n > 0)
-                {
-                  s.mid       = c.mid / double(c.n);
-                  s.thickness = std::abs(across * (c.normal / c.normal.norm()));
-                  s.major     = c.major / c.n;
-                  s.minor     = c.minor / c.n;
-                }
-              else // no mid-plane cell corner here (e.g. a Q2 mid-edge node)
-                {
-                  s.mid       = c.x_bottom + 0.5 * across;
-                  s.thickness = across.norm();
-                }
-              s.damage = c.damage;
-              s.rim    = c.rim;
-              s.zone   = flc.zone(s.minor, s.major, s.damage);
-              r_max    = std::max(r_max, s.reference_radius);
-              cols.push_back(s);
-              keys.push_back(k);
-            }
-          // Without rim nodes between the surfaces (one layer of Q1), the rim
-          // is where the blank radius is largest.
-          const bool flagged = std::any_of(cols.begin(),
-                                           cols.end(),
-                                           [](const auto &c) { return c.rim; });
-          if (!flagged)
-            for (auto &c : cols)
-              c.rim = c.reference_radius > r_max - 1e-6;
-
-          SheetSummary<dim> s;
-          s.blank_radius  = r_max;
-          s.min_thickness = std::numeric_limits<double>::max();
-          for (const auto &c : cols)
-            {
-              s.min_thickness = std::min(s.min_thickness, c.thickness);
-              ++s.zone_count[static_cast<int>(c.zone)];
-            }
-          // Where: of the thinnest columns (up to round-off), the first in
-          // the canonical order, so that no partition decides.
-          bool found = false;
-          for (const auto &c : cols)
-            if (model::ties(c.thickness, s.min_thickness) &&
-                (!found || model::precedes(c.mid, s.min_thickness_location)))
-              {
-                s.min_thickness_radius   = c.reference_radius;
-                s.min_thickness_location = c.mid;
-                found                    = true;
-              }
-          s.max_thinning = 100. * (1. - s.min_thickness / t0);
-          std::vector<const SheetColumn<dim> *> rim;
-          for (const auto &c : cols)
-            if (c.rim)
-              rim.push_back(&c);
-          std::sort(rim.begin(), rim.end(), [](const auto *a, const auto *b) {
-            return a->reference_angle < b->reference_angle;
-          });
-          auto radius = [](const SheetColumn<dim> &c) {
-            return dim == 2 ? c.mid[0] : std::hypot(c.mid[0], c.mid[1]);
-          };
-          for (const double phi :
-               (dim == 2 ? std::vector<double>{0.}
-                         : std::vector<double>{0., 45., 90.}))
-            {
-              double r = nan, R = nan;
-              for (std::size_t i = 0; i < rim.size(); ++i)
-                {
-                  const double a = rim[i]->reference_angle;
-                  if (std::abs(a - phi) < 1e-6)
-                    r = radius(*rim[i]), R = rim[i]->reference_radius;
-                  else if (i + 1 < rim.size() && a < phi &&
-                           rim[i + 1]->reference_angle > phi)
-                    {
-                      const double w =
-                        (phi - a) / (rim[i + 1]->reference_angle - a);
-                      r = (1 - w) * radius(*rim[i]) + w * radius(*rim[i + 1]);
-                      R = (1 - w) * rim[i]->reference_radius +
-                          w * rim[i + 1]->reference_radius;
-                    }
-                }
-              s.rim_radius.push_back(r);
-              s.draw_in.push_back(R - r);
-            }
-          packed = {s.min_thickness,
-                    s.min_thickness_radius,
-                    s.max_thinning,
-                    s.blank_radius};
-          for (unsigned int d = 0; d < dim; ++d)
-            packed.push_back(s.min_thickness_location[d]);
-          for (const auto n : s.zone_count)
-            packed.push_back(n);
-          packed.insert(packed.end(), s.rim_radius.begin(), s.rim_radius.end());
-          packed.insert(packed.end(), s.draw_in.begin(), s.draw_in.end());
-        }
-      packed            = Utilities::MPI::broadcast(state.comm, packed, 0);
-      std::size_t i     = 0;
-      sum.min_thickness = packed[i++];
-      sum.min_thickness_radius = packed[i++];
-      sum.max_thinning         = packed[i++];
-      sum.blank_radius         = packed[i++];
-      for (unsigned int d = 0; d < dim; ++d)
-        sum.min_thickness_location[d] = packed[i++];
-      for (auto &n : sum.zone_count)
-        n = static_cast<unsigned int>(packed[i++]);
-      const std::size_t directions = (packed.size() - i) / 2;
-      sum.rim_radius.assign(packed.begin() + i,
-                            packed.begin() + i + directions);
-      sum.draw_in.assign(packed.begin() + i + directions, packed.end());
+      return r;
     }
 
     template <int dim>

@@ -83,6 +83,32 @@ namespace formsolve
       static Key key(const dealii::Point<dim> &reference);
 
     private:
+      /// Planform keys are reference positions in units of quantum (mm).
+      static constexpr double quantum = 1e-7;
+      /// Corners of a cell's face in the planform.
+      static constexpr unsigned int n_corners = dim == 2 ? 2 : 4;
+
+      /// One rank's measurements, flat vectors of doubles gathered on rank 0.
+      /// nodes: key, side (0 bottom, 1 top, 2 rim), current position (dim);
+      /// cells: corner keys, corner mid-plane points, major, minor, normal;
+      /// damages: corner keys, largest deciding damage in the cell.
+      struct Records
+      {
+        std::vector<double> nodes, cells, damages;
+      };
+      /// This rank's surface nodes, the cells cut by the reference mid-plane
+      /// and every cell's damage.
+      Records local_records(const simulation::State<dim>   &state,
+                            const material::DamageCriteria &damage) const;
+      /// Rank 0: cols and keys from the records of all ranks
+      /// (source/postprocess/sheet_columns.cc).
+      void assemble_columns(const std::vector<std::vector<double>> &nodes,
+                            const std::vector<std::vector<double>> &cells,
+                            const std::vector<std::vector<double>> &damages);
+      /// Rank 0: the summary of cols (marks the rim where no rim nodes
+      /// exist).
+      SheetSummary<dim> summarise();
+
       double                        t0;
       material::FormingLimit        flc;
       SheetSummary<dim>             sum;

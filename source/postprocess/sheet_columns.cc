@@ -1,0 +1,203 @@
+// Rank 0's part of SheetMeasures::measure: the node columns assembled from
+// every rank's flat records, and the summary of the sheet over them
+// (thinning, safety zones, rim radius and draw-in; doc/theory.md, section 11).
+#include <formsolve/model/dimensions.h>
+#include <formsolve/model/position_order.h>
+#include <formsolve/postprocess/sheet_measures.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace formsolve
+{
+  namespace postprocess
+  {
+    using namespace dealii;
+
+    template <int dim>
+    void SheetMeasures<dim>::assemble_columns(
+      const std::vector<std::vector<double>> &all_nodes,
+      const std::vector<std::vector<double>> &all_cells,
+      const std::vector<std::vector<double>> &all_damages)
+    {
+      constexpr unsigned int nk = dim - 1, nc = n_corners;
+      struct Column
+      {
+        bool           top = false, bottom = false, rim = false;
+        Point<dim>     x_top, x_bottom, mid;
+        Tensor<1, dim> normal;
+        double         major = 0, minor = 0, damage = 0;
+        unsigned int   n = 0;
+      };
+      std::map<Key, Column> columns;
+      auto read_key = [&](const std::vector<double> &v, std::size_t &i) {
+        Key k;
+        for (unsigned int d = 0; d < nk; ++d)
+          k[d] = static_cast<long long>(v[i++]);
+        return k;
+      };
+      for (const auto &v : all_nodes)
+        for (std::size_t i = 0; i < v.size();)
+          {
+            auto        &c    = columns[read_key(v, i)];
+            const double side = v[i++];
+            Point<dim>   p;
+            for (unsigned int d = 0; d < dim; ++d)
+              p[d] = v[i++];
+            if (side == 0.)
+              c.bottom = true, c.x_bottom = p;
+            else if (side == 1.)
+              c.top = true, c.x_top = p;
+            else
+              c.rim = true;
+          }
+      for (const auto &v : all_cells)
+        for (std::size_t i = 0; i < v.size();)
+          {
+            std::array<Key, n_corners>        k;
+            std::array<Point<dim>, n_corners> p;
+            for (unsigned int c = 0; c < nc; ++c)
+              {
+                k[c] = read_key(v, i);
+                for (unsigned int d = 0; d < dim; ++d)
+                  p[c][d] = v[i++];
+              }
+            const double   major = v[i++], minor = v[i++];
+            Tensor<1, dim> n;
+            for (unsigned int d = 0; d < dim; ++d)
+              n[d] = v[i++];
+            for (unsigned int c = 0; c < nc; ++c)
+              {
+                auto &col = columns[k[c]];
+                col.mid += p[c];
+                col.normal += n;
+                col.major += major;
+                col.minor += minor;
+                ++col.n;
+              }
+          }
+      for (const auto &v : all_damages)
+        for (std::size_t i = 0; i < v.size();)
+          {
+            std::array<Key, n_corners> k;
+            for (unsigned int c = 0; c < nc; ++c)
+              k[c] = read_key(v, i);
+            const double d = v[i++];
+            for (unsigned int c = 0; c < nc; ++c)
+              columns[k[c]].damage = std::max(columns[k[c]].damage, d);
+          }
+
+      for (const auto &[k, c] : columns)
+        {
+          if (!c.top || !c.bottom)
+            continue;
+          SheetColumn<dim> s;
+          Point<dim>       X;
+          for (unsigned int d = 0; d < nk; ++d)
+            X[d] = k[d] * quantum;
+          s.reference_radius = dim == 2 ? X[0] : std::hypot(X[0], X[1]);
+          s.reference_angle =
+            dim == 2 ? 0. : std::atan2(X[1], X[0]) * 180. / M_PI;
+          const Tensor<1, dim> across = c.x_top - c.x_bottom;
+          if (c.n > 0)
+            {
+              s.mid       = c.mid / double(c.n);
+              s.thickness = std::abs(across * (c.normal / c.normal.norm()));
+              s.major     = c.major / c.n;
+              s.minor     = c.minor / c.n;
+            }
+          else // no mid-plane cell corner here (e.g. a Q2 mid-edge node)
+            {
+              s.mid       = c.x_bottom + 0.5 * across;
+              s.thickness = across.norm();
+            }
+          s.damage = c.damage;
+          s.rim    = c.rim;
+          s.zone   = flc.zone(s.minor, s.major, s.damage);
+          cols.push_back(s);
+          keys.push_back(k);
+        }
+    }
+
+    template <int dim>
+    SheetSummary<dim> SheetMeasures<dim>::summarise()
+    {
+      constexpr double nan   = std::numeric_limits<double>::quiet_NaN();
+      double           r_max = 0;
+      for (const auto &c : cols)
+        r_max = std::max(r_max, c.reference_radius);
+      // Without rim nodes between the surfaces (one layer of Q1), the rim
+      // is where the blank radius is largest.
+      const bool flagged = std::any_of(cols.begin(),
+                                       cols.end(),
+                                       [](const auto &c) { return c.rim; });
+      if (!flagged)
+        for (auto &c : cols)
+          c.rim = c.reference_radius > r_max - 1e-6;
+
+      SheetSummary<dim> s;
+      s.blank_radius  = r_max;
+      s.min_thickness = std::numeric_limits<double>::max();
+      for (const auto &c : cols)
+        {
+          s.min_thickness = std::min(s.min_thickness, c.thickness);
+          ++s.zone_count[static_cast<int>(c.zone)];
+        }
+      // Where: of the thinnest columns (up to round-off), the first in
+      // the canonical order, so that no partition decides.
+      bool found = false;
+      for (const auto &c : cols)
+        if (model::ties(c.thickness, s.min_thickness) &&
+            (!found || model::precedes(c.mid, s.min_thickness_location)))
+          {
+            s.min_thickness_radius   = c.reference_radius;
+            s.min_thickness_location = c.mid;
+            found                    = true;
+          }
+      s.max_thinning = 100. * (1. - s.min_thickness / t0);
+      std::vector<const SheetColumn<dim> *> rim;
+      for (const auto &c : cols)
+        if (c.rim)
+          rim.push_back(&c);
+      std::sort(rim.begin(), rim.end(), [](const auto *a, const auto *b) {
+        return a->reference_angle < b->reference_angle;
+      });
+      auto radius = [](const SheetColumn<dim> &c) {
+        return dim == 2 ? c.mid[0] : std::hypot(c.mid[0], c.mid[1]);
+      };
+      for (const double phi : (dim == 2 ? std::vector<double>{0.}
+                                        : std::vector<double>{0., 45., 90.}))
+        {
+          double r = nan, R = nan;
+          for (std::size_t i = 0; i < rim.size(); ++i)
+            {
+              const double a = rim[i]->reference_angle;
+              if (std::abs(a - phi) < 1e-6)
+                r = radius(*rim[i]), R = rim[i]->reference_radius;
+              else if (i + 1 < rim.size() && a < phi &&
+                       rim[i + 1]->reference_angle > phi)
+                {
+                  const double w =
+                    (phi - a) / (rim[i + 1]->reference_angle - a);
+                  r = (1 - w) * radius(*rim[i]) + w * radius(*rim[i + 1]);
+                  R = (1 - w) * rim[i]->reference_radius +
+                      w * rim[i + 1]->reference_radius;
+                }
+            }
+          s.rim_radius.push_back(r);
+          s.draw_in.push_back(R - r);
+        }
+      return s;
+    }
+
+#define INSTANTIATE(dim)                              \
+  template void SheetMeasures<dim>::assemble_columns( \
+    const std::vector<std::vector<double>> &,         \
+    const std::vector<std::vector<double>> &,         \
+    const std::vector<std::vector<double>> &);        \
+  template SheetSummary<dim> SheetMeasures<dim>::summarise();
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace postprocess
+} // namespace formsolve
