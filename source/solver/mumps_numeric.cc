@@ -1,0 +1,161 @@
+// MumpsDirect's numeric phases: the values into MUMPS's input, the
+// factorisation, and the solve with distributed right-hand side and solution.
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <formsolve/solver/mumps_instance.h>
+
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_Export.h>
+#include <Epetra_Vector.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    using namespace dealii;
+
+    // MUMPS's control arrays are documented 1-based.
+#define ICNTL(i) id.icntl[(i)-1]
+#define INFOG(i) id.infog[(i)-1]
+
+    template <typename Real>
+    void MumpsDirect::Instance<Real>::copy_values(
+      const TrilinosWrappers::SparseMatrix &A)
+    {
+      const Epetra_CrsMatrix &m = A.trilinos_matrix();
+      std::size_t             e = 0, i = 0;
+      for (int r = 0; r < m.NumMyRows(); ++r)
+        {
+          int     length;
+          double *v;
+          int    *columns;
+          m.ExtractMyRowView(r, length, v, columns);
+          for (int k = 0; k < length; ++k, ++e)
+            {
+              AssertThrow(e < kept.size(),
+                          ExcMessage("MUMPS: the sparsity pattern changed "
+                                     "since the analysis"));
+              if (kept[e])
+                values[i++] = v[k];
+            }
+        }
+      AssertThrow(e == kept.size(),
+                  ExcMessage("MUMPS: the sparsity pattern changed since the "
+                             "analysis"));
+      if (!settings.symmetric_part)
+        return;
+      for (std::size_t k = 0; k < values.size(); ++k)
+        if (mirror_row[k] >= 0)
+          {
+            int     length;
+            double *v;
+            int    *columns;
+            m.ExtractMyRowView(mirror_row[k], length, v, columns);
+            values[k] = 0.5 * (values[k] + v[mirror_position[k]]);
+          }
+    }
+
+    template <typename Real>
+    void MumpsDirect::Instance<Real>::factorise(
+      const TrilinosWrappers::SparseMatrix &A)
+    {
+      copy_values(A);
+      // Too little workspace for the pivoting MUMPS met: more, and again.
+      for (unsigned int attempt = 0;; ++attempt)
+        {
+          id.job = 2;
+          mumps_detail::Precision<Real>::run(id);
+          const bool workspace = INFOG(1) == -8 || INFOG(1) == -9 ||
+                                 INFOG(1) == -14 || INFOG(1) == -15 ||
+                                 INFOG(1) == -17 || INFOG(1) == -20;
+          if (!workspace || attempt == 4)
+            break;
+          ICNTL(14) = 2 * std::max(ICNTL(14), 20);
+        }
+      check("numeric factorisation");
+      // INFO(23): the unknowns this rank eliminated; its share of every
+      // solution comes back there, which may differ after a factorisation
+      // (delayed pivots).
+      const int n_pivots = id.info[22];
+      solution_rows.assign(n_pivots, 0);
+      solution.assign(n_pivots, 0);
+      id.lsol_loc = n_pivots;
+      id.isol_loc = solution_rows.data();
+      id.sol_loc  = solution.data();
+    }
+
+    template <typename Real>
+    void
+    MumpsDirect::Instance<Real>::solve(TrilinosWrappers::MPI::Vector       &x,
+                                       const TrilinosWrappers::MPI::Vector &b)
+    {
+      const double *source = b.trilinos_vector()[0];
+      std::copy(source, source + rhs.size(), rhs.begin());
+      id.nloc_rhs = rhs.size();
+      id.lrhs_loc = rhs.size();
+      id.irhs_loc = rhs_rows.data();
+      id.rhs_loc  = rhs.data();
+      id.nrhs     = 1;
+      id.lrhs     = id.n;
+      call(3, "solve");
+      // The export is rebuilt only when a factorisation moved the rows of
+      // the solution on some rank.
+      const bool changed =
+        Utilities::MPI::logical_or(!to_owner || solution_rows != exported_rows,
+                                   comm);
+      if (changed)
+        {
+          exported_rows = solution_rows;
+          std::vector<int> rows(solution_rows.size());
+          for (std::size_t k = 0; k < rows.size(); ++k)
+            rows[k] = solution_rows[k] - 1;
+          const Epetra_BlockMap &target = x.trilinos_vector().Map();
+          solution_map                  = std::make_unique<Epetra_Map>(-1,
+                                                      rows.size(),
+                                                      rows.data(),
+                                                      0,
+                                                      target.Comm());
+          to_owner = std::make_unique<Epetra_Export>(*solution_map, target);
+        }
+      Epetra_Vector values(*solution_map);
+      std::copy(solution.begin(), solution.end(), values.Values());
+      AssertThrow(x.trilinos_vector().Export(values, *to_owner, Insert) == 0,
+                  ExcMessage("MUMPS: the export of the solution failed"));
+    }
+
+    template <typename Real>
+    double MumpsDirect::Instance<Real>::memory_mb() const
+    {
+      return INFOG(22);
+    }
+
+    template <typename Real>
+    double MumpsDirect::Instance<Real>::factor_entries() const
+    {
+      // Negative: in millions. INFOG(35): after low-rank compression.
+      const int entries =
+        settings.low_rank_tolerance > 0 ? INFOG(35) : INFOG(29);
+      return entries >= 0 ? entries : -1e6 * entries;
+    }
+
+#define INSTANTIATE(Real)                                         \
+  template void MumpsDirect::Instance<Real>::copy_values(         \
+    const TrilinosWrappers::SparseMatrix &);                      \
+  template void MumpsDirect::Instance<Real>::factorise(           \
+    const TrilinosWrappers::SparseMatrix &);                      \
+  template void MumpsDirect::Instance<Real>::solve(               \
+    TrilinosWrappers::MPI::Vector &,                              \
+    const TrilinosWrappers::MPI::Vector &);                       \
+  template double MumpsDirect::Instance<Real>::memory_mb() const; \
+  template double MumpsDirect::Instance<Real>::factor_entries() const;
+    INSTANTIATE(double)
+    INSTANTIATE(float)
+#undef INSTANTIATE
+  } // namespace solver
+} // namespace formsolve
