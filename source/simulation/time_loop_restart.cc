@@ -83,37 +83,28 @@ namespace formsolve
     {
       s.newton_iterations = std::stoul(m.at("summary.newton_iterations"));
       s.linear_iterations = std::stoul(m.at("summary.linear_iterations"));
-      // Absent in checkpoints written before it was counted.
-      s.matrix_assemblies = m.count("summary.matrix_assemblies")
-                              ? std::stoul(m.at("summary.matrix_assemblies"))
-                              : 0;
-      s.coarse_start_iterations =
-        m.count("summary.coarse_start_iterations")
-          ? std::stoul(m.at("summary.coarse_start_iterations"))
-          : 0;
-      s.factorisations = m.count("summary.factorisations")
-                           ? std::stoul(m.at("summary.factorisations"))
-                           : 0;
-      s.factorisation_memory_mb =
-        m.count("summary.factorisation_memory_mb")
-          ? std::stod(m.at("summary.factorisation_memory_mb"))
-          : 0;
-      s.factor_entries     = m.count("summary.factor_entries")
-                               ? std::stod(m.at("summary.factor_entries"))
-                               : 0;
-      s.cutbacks           = std::stoul(m.at("summary.cutbacks"));
-      s.newton_wall_time   = std::stod(m.at("summary.newton_wall_time"));
-      s.wall_before        = std::stod(m.at("summary.wall_time"));
-      s.n_dofs             = std::stod(m.at("summary.n_dofs"));
-      s.dof_steps          = std::stod(m.at("summary.dof_steps"));
-      s.peak_punch_force   = std::stod(m.at("summary.peak_punch_force"));
-      s.peak_force_travel  = std::stod(m.at("summary.peak_force_travel"));
-      s.max_penetration    = std::stod(m.at("summary.max_penetration"));
-      s.critical_stroke    = std::stod(m.at("summary.critical_stroke"));
-      s.fracture_location  = m.at("summary.fracture_location");
-      s.last_damage        = std::stod(m.at("summary.last_damage"));
-      s.last_damage_travel = std::stod(m.at("summary.last_damage_travel"));
-      s.steps              = state.step;
+      // Absent in checkpoints written before it was counted: 0.
+      auto optional = [&m](const std::string &key) {
+        return m.count(key) ? std::stod(m.at(key)) : 0.;
+      };
+      s.matrix_assemblies       = optional("summary.matrix_assemblies");
+      s.coarse_start_iterations = optional("summary.coarse_start_iterations");
+      s.factorisations          = optional("summary.factorisations");
+      s.factorisation_memory_mb = optional("summary.factorisation_memory_mb");
+      s.factor_entries          = optional("summary.factor_entries");
+      s.cutbacks                = std::stoul(m.at("summary.cutbacks"));
+      s.newton_wall_time        = std::stod(m.at("summary.newton_wall_time"));
+      s.wall_before             = std::stod(m.at("summary.wall_time"));
+      s.n_dofs                  = std::stod(m.at("summary.n_dofs"));
+      s.dof_steps               = std::stod(m.at("summary.dof_steps"));
+      s.peak_punch_force        = std::stod(m.at("summary.peak_punch_force"));
+      s.peak_force_travel       = std::stod(m.at("summary.peak_force_travel"));
+      s.max_penetration         = std::stod(m.at("summary.max_penetration"));
+      s.critical_stroke         = std::stod(m.at("summary.critical_stroke"));
+      s.fracture_location       = m.at("summary.fracture_location");
+      s.last_damage             = std::stod(m.at("summary.last_damage"));
+      s.last_damage_travel      = std::stod(m.at("summary.last_damage_travel"));
+      s.steps                   = state.step;
       step_solver.set_time_step(std::stod(m.at("time_step")));
       last_output_step = std::stoi(m.at("last_output_step"));
       refinement_rows  = std::stoul(m.at("refinement_rows"));
