@@ -22,8 +22,15 @@ namespace formsolve
       Assert(A.Filled(), ExcMessage("The pattern must be final."));
       n = dof_handler.get_fe().n_dofs_per_cell();
       slot.assign(dof_handler.get_triangulation().n_active_cells(), invalid);
+      // Room for every owned cell at once: growing by doubling would hold
+      // the old and the new arrays together (1.5-2x the map at its peak).
+      std::size_t owned = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        owned += cell->is_locally_owned();
       rows.clear();
       offsets.clear();
+      rows.reserve(owned * n);
+      offsets.reserve(owned * n * n);
       n_mapped  = 0;
       n_entries = A.NumMyNonzeros();
 

@@ -37,22 +37,31 @@ namespace formsolve
     template <int dim>
     void FormingSystem<dim>::reinit()
     {
-      // The direct solver refers to the matrix: release it first.
+      // The direct solver refers to the matrix: release it first. The old
+      // system goes before the new one is built, so that the two never
+      // coexist (a remeshing, the coarse start).
       linear_solver.reset();
-      DynamicSparsityPattern dsp(state.relevant);
-      // ML's line detection needs every ghost node with all its components
-      // in the column map ("Incomplete ghost block detected" on 2 ranks
-      // otherwise): keep the (zero) couplings of constrained DoFs.
-      DoFTools::make_sparsity_pattern(
-        state.dof_handler,
-        dsp,
-        state.constraints,
-        prm.linear.type == parameters::LinearSolverType::iterative);
-      SparsityTools::distribute_sparsity_pattern(dsp,
-                                                 state.owned,
-                                                 state.comm,
-                                                 state.relevant);
-      matrix.reinit(state.owned, state.owned, dsp, state.comm);
+      matrix.clear();
+      body_matrix.clear();
+      scatter = CellScatter<dim>();
+      dual    = DualStress();
+      {
+        DynamicSparsityPattern dsp(state.relevant);
+        // ML's line detection needs every ghost node with all its
+        // components in the column map ("Incomplete ghost block detected"
+        // on 2 ranks otherwise): keep the (zero) couplings of constrained
+        // DoFs.
+        DoFTools::make_sparsity_pattern(
+          state.dof_handler,
+          dsp,
+          state.constraints,
+          prm.linear.type == parameters::LinearSolverType::iterative);
+        SparsityTools::distribute_sparsity_pattern(dsp,
+                                                   state.owned,
+                                                   state.comm,
+                                                   state.relevant);
+        matrix.reinit(state.owned, state.owned, dsp, state.comm);
+      } // the pattern (0.4 kB/DoF) is freed before the cell map is built
       scatter.reinit(state.dof_handler, state.constraints, matrix);
       if (strategy.needs_system())
         body_matrix.reinit(matrix);
