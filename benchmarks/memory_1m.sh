@@ -6,7 +6,7 @@
 # level coarser). Does the default still fit in 8 GB? Per run: the peak of
 # all ranks and of the largest, the set-up peak, the iterations on both
 # meshes, MUMPS's own memory, the Newton time and the first step's force.
-# About 40 minutes on 2 cores (39 on 6339678, part of it beside a CI run). Writes doc/memory-1m.csv and prints its table.
+# About 30 minutes on 2 cores (28 on 0ea70f1; 39 on 6339678, part of it beside a CI run). Writes doc/memory-1m.csv and prints its table.
 # Usage: bash benchmarks/memory_1m.sh [--force]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
