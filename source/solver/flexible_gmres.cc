@@ -28,8 +28,12 @@ namespace formsolve
       std::vector<double>              cs(m), sn(m), g(m + 1);
       Vector                           w(b);
 
-      operator_vmult(w, x);
-      w.sadd(-1., 1., b);
+      // From x = 0 (most solves) the residual is b: no product with A.
+      if (x.linfty_norm() > 0)
+        {
+          operator_vmult(w, x);
+          w.sadd(-1., 1., b);
+        }
       result.residual = w.l2_norm();
       while (result.residual > tolerance && result.iterations < max_iterations)
         {
