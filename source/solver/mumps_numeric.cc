@@ -74,11 +74,24 @@ namespace formsolve
           const bool workspace = INFOG(1) == -8 || INFOG(1) == -9 ||
                                  INFOG(1) == -14 || INFOG(1) == -15 ||
                                  INFOG(1) == -17 || INFOG(1) == -20;
+          if (INFOG(1) < 0 && !workspace && ICNTL(8) == -1)
+            {
+              // Failed with the kept scaling: scale these values afresh.
+              ICNTL(8) = 77;
+              continue;
+            }
           if (!workspace || attempt == 4)
             break;
           ICNTL(14) = 2 * std::max(ICNTL(14), 20);
         }
       check("numeric factorisation");
+      // MUMPS's scaling (ICNTL(8) = 77: computed in every factorisation)
+      // is kept from the first factorisation after the analysis, as MUMPS's
+      // own value-based permutation is: the tangents of one mesh differ
+      // little, and the scaling cost 10 % of each factorisation on the
+      // shipped 3-D case (doc/performance.md, "MUMPS's scaling kept").
+      if (ICNTL(8) != -1 && id.colsca_from_mumps && id.rowsca_from_mumps)
+        ICNTL(8) = -1;
       // INFO(23): the unknowns this rank eliminated; its share of every
       // solution comes back there, which may differ after a factorisation
       // (delayed pivots).
