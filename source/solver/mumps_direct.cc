@@ -116,6 +116,11 @@ namespace formsolve
     template <typename Real>
     MumpsDirect::Instance<Real>::~Instance()
     {
+      // The scaling kept by factorise() (ICNTL(8) = -1) is MUMPS's own
+      // allocation, but MUMPS frees the scaling only if it did not come from
+      // the user (KEEP(52) != -1, set from ICNTL(8) in the factorisation).
+      if (id.keep[51] == -1 && id.colsca_from_mumps && id.rowsca_from_mumps)
+        id.keep[51] = 77;
       id.job = -2;
       mumps_detail::Precision<Real>::run(id);
     }
