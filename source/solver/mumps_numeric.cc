@@ -88,7 +88,7 @@ namespace formsolve
       // MUMPS's scaling (ICNTL(8) = 77: computed in every factorisation)
       // is kept from the first factorisation after the analysis, as MUMPS's
       // own value-based permutation is: the tangents of one mesh differ
-      // little, and the scaling cost 10 % of each factorisation on the
+      // little, and the scaling cost 7-16 % of each factorisation on the
       // shipped 3-D case (doc/performance.md, "MUMPS's scaling kept").
       if (ICNTL(8) != -1 && id.colsca_from_mumps && id.rowsca_from_mumps)
         ICNTL(8) = -1;
