@@ -320,28 +320,34 @@ namespace formsolve
             : static_cast<const Mapping<dim> &>(state.reference_mapping),
           state.dof_handler,
           state.owned));
-      unsigned int its =
-        linear_solver->solve(matrix, dv, rhs, factor_reuse.may_reuse());
-      dw = 0;
-      if (holder_controlled())
+      // Bordered system (the holder under force control): the holder's
+      // column K z = b with the same factors, in the same solve.
+      const bool bordered =
+        holder_controlled() && holder.engaged() && !hold_holder;
+      unsigned int its = 0;
+      if (bordered)
         {
-          if (holder.engaged() && !hold_holder)
-            {
-              // Bordered system: one more solve with the same factorisation.
-              VectorType z(state.owned, state.comm);
-              its += linear_solver->solve_again(z, holder.column());
-              dw = holder.correction(dv, z);
-              dv.add(-dw, z);
-            }
-          else if (holder.engaged())
-            // The first correction of a step comes from the secant tangent
-            // (dual reset), under which the sheet below the holder is 5-10x
-            // softer than in Newton's: the Schur complement (e - c^T K^-1 b)
-            // is then 2e-4 e, and dw about 100x the holder's speed. The
-            // holder keeps its velocity for that one correction (doc/theory.md
-            // section 6a), and K^-1 b is not needed.
-            dw = 0;
-          else
+          VectorType z(state.owned, state.comm);
+          its = linear_solver->solve_pair(matrix,
+                                          dv,
+                                          rhs,
+                                          z,
+                                          holder.column(),
+                                          factor_reuse.may_reuse());
+          dw  = holder.correction(dv, z);
+          dv.add(-dw, z);
+        }
+      else
+        {
+          its = linear_solver->solve(matrix, dv, rhs, factor_reuse.may_reuse());
+          // The first correction of a step comes from the secant tangent
+          // (dual reset), under which the sheet below the holder is 5-10x
+          // softer than in Newton's: the Schur complement (e - c^T K^-1 b)
+          // is then 2e-4 e, and dw about 100x the holder's speed. The
+          // holder keeps its velocity for that one correction (doc/theory.md
+          // section 6a), and K^-1 b is not needed.
+          dw = 0;
+          if (holder_controlled() && !holder.engaged())
             dw = holder.closing_correction(state.tools.allowed_penetration(
                                              state.tools.holder_index()),
                                            dt);

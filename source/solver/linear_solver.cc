@@ -132,14 +132,13 @@ namespace formsolve
       return factorise_new(A, x, b);
     }
 
-    unsigned int
-    LinearSolver::factorise_new(const TrilinosWrappers::SparseMatrix &A,
-                                TrilinosWrappers::MPI::Vector        &x,
-                                const TrilinosWrappers::MPI::Vector  &b)
+    void LinearSolver::analyse_if_new(const TrilinosWrappers::SparseMatrix &A)
     {
+      if (has_factorised_pattern(A))
+        return;
       auto      &matrix = const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix());
-      const bool same_pattern = has_factorised_pattern(A);
-      if (!same_pattern && prm.direct_solver == parameters::DirectSolver::mumps)
+      const auto t      = phase(timer, "linear solve: analysis");
+      if (prm.direct_solver == parameters::DirectSolver::mumps)
         {
           MumpsDirect::Settings settings;
           settings.symmetric_part =
@@ -155,17 +154,13 @@ namespace formsolve
             prm.factor_precision ==
             parameters::FactorPrecision::single_precision;
           mumps.reset();
-          const auto t = phase(timer, "linear solve: analysis");
           mumps =
             std::make_unique<MumpsDirect>(A.get_mpi_communicator(), settings);
           mumps->analyse(A);
-          factorised_matrix = &matrix;
-          factorised_nnz    = A.n_nonzero_elements();
         }
-      else if (!same_pattern)
+      else
         {
-          const auto t = phase(timer, "linear solve: analysis");
-          problem      = std::make_unique<Epetra_LinearProblem>();
+          problem = std::make_unique<Epetra_LinearProblem>();
           problem->SetOperator(&matrix);
           Amesos     factory;
           const bool amesos_mumps =
@@ -178,9 +173,17 @@ namespace formsolve
                                  std::string(amesos_mumps ? "MUMPS" : "KLU")));
           AssertThrow(direct->SymbolicFactorization() == 0,
                       ExcMessage("symbolic factorisation failed"));
-          factorised_matrix = &matrix;
-          factorised_nnz    = A.n_nonzero_elements();
         }
+      factorised_matrix = &matrix;
+      factorised_nnz    = A.n_nonzero_elements();
+    }
+
+    unsigned int
+    LinearSolver::factorise_new(const TrilinosWrappers::SparseMatrix &A,
+                                TrilinosWrappers::MPI::Vector        &x,
+                                const TrilinosWrappers::MPI::Vector  &b)
+    {
+      analyse_if_new(A);
       return factorise_and_substitute(x, b);
     }
 
@@ -216,9 +219,7 @@ namespace formsolve
       return failed_iterations + solve_direct(A, x, b);
     }
 
-    unsigned int LinearSolver::factorise_and_substitute(
-      TrilinosWrappers::MPI::Vector       &x,
-      const TrilinosWrappers::MPI::Vector &b)
+    void LinearSolver::factorise_current()
     {
       {
         const auto t = phase(timer, "linear solve: factorisation");
@@ -231,33 +232,40 @@ namespace formsolve
       }
       ++n_factorisations;
       factors_current = true;
+    }
+
+    unsigned int LinearSolver::factorise_and_substitute(
+      TrilinosWrappers::MPI::Vector       &x,
+      const TrilinosWrappers::MPI::Vector &b)
+    {
+      factorise_current();
       return apply_current_factors(x, b);
     }
 
-    unsigned int
-    LinearSolver::apply_current_factors(TrilinosWrappers::MPI::Vector       &x,
-                                        const TrilinosWrappers::MPI::Vector &b)
+    bool LinearSolver::exact_factors() const
     {
+      return prm.low_rank_tolerance == 0 &&
+             (mumps == nullptr ||
+              (!mumps->factors_symmetric_part() && !mumps->factors_single()));
+    }
+
+    unsigned int LinearSolver::approximate_factors_limit() const
+    {
+      // Low-rank, single-precision factors, or those of the symmetric part,
+      // are approximate: GMRES makes the solve as exact as the reuse
+      // tolerance asks.
       const bool low_rank = prm.low_rank_tolerance > 0;
       const bool symmetric_part =
         mumps != nullptr && mumps->factors_symmetric_part();
       const bool single = mumps != nullptr && mumps->factors_single();
-      if (!low_rank && !symmetric_part && !single)
-        {
-          substitute(x, b);
-          return 1;
-        }
-      // Low-rank, single-precision factors, or those of the symmetric part,
-      // are approximate: GMRES makes the solve as exact as the reuse
-      // tolerance asks.
-      const unsigned int limit =
-        (low_rank ? prm.low_rank_iterations : 0) +
-        (symmetric_part ? prm.symmetric_part_iterations : 0) +
-        (single ? prm.single_precision_iterations : 0);
-      x                = 0;
-      unsigned int its = 0;
-      if (gmres_with_factors(*last_matrix, x, b, limit, its))
-        return its;
+      return (low_rank ? prm.low_rank_iterations : 0) +
+             (symmetric_part ? prm.symmetric_part_iterations : 0) +
+             (single ? prm.single_precision_iterations : 0);
+    }
+
+    void
+    LinearSolver::approximate_factors_failed(const unsigned int limit) const
+    {
       // Which approximation failed, and the entries that would help.
       std::string which, remedy;
       const auto  name = [&](const bool used, const char *w, const char *r) {
@@ -267,13 +275,13 @@ namespace formsolve
             remedy += remedy.empty() ? r : std::string("; ") + r;
           }
       };
-      name(low_rank,
+      name(prm.low_rank_tolerance > 0,
            "low-rank ",
            "Low-rank iterations, or a lower Low-rank tolerance");
-      name(single,
+      name(mumps != nullptr && mumps->factors_single(),
            "single-precision ",
            "Single-precision iterations, or Factor precision = double");
-      name(symmetric_part,
+      name(mumps != nullptr && mumps->factors_symmetric_part(),
            "symmetric-part ",
            "Symmetric-part iterations, or Unsymmetric tangent = LU");
       AssertThrow(false,
@@ -281,6 +289,23 @@ namespace formsolve
                              "factors did not reach Reuse tolerance within " +
                              std::to_string(limit) + " iterations (raise " +
                              remedy + ")"));
+      std::abort(); // not reached: AssertThrow(false, ...) throws
+    }
+
+    unsigned int
+    LinearSolver::apply_current_factors(TrilinosWrappers::MPI::Vector       &x,
+                                        const TrilinosWrappers::MPI::Vector &b)
+    {
+      if (exact_factors())
+        {
+          substitute(x, b);
+          return 1;
+        }
+      const unsigned int limit = approximate_factors_limit();
+      x                        = 0;
+      unsigned int its         = 0;
+      if (!gmres_with_factors(*last_matrix, x, b, limit, its))
+        approximate_factors_failed(limit);
       return its;
     }
 
@@ -293,6 +318,16 @@ namespace formsolve
       problem->SetLHS(&x.trilinos_vector());
       problem->SetRHS(const_cast<Epetra_MultiVector *>(&b.trilinos_vector()));
       AssertThrow(direct->Solve() == 0, ExcMessage("direct solve failed"));
+    }
+
+    void LinearSolver::substitute(TrilinosWrappers::MPI::Vector       &x,
+                                  const TrilinosWrappers::MPI::Vector &b,
+                                  TrilinosWrappers::MPI::Vector       &y,
+                                  const TrilinosWrappers::MPI::Vector &c)
+    {
+      Assert(mumps != nullptr, ExcInternalError());
+      const auto t = phase(timer, "linear solve: substitution");
+      mumps->solve(x, b, y, c);
     }
 
     bool

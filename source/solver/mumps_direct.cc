@@ -46,7 +46,15 @@ namespace formsolve
     void MumpsDirect::solve(TrilinosWrappers::MPI::Vector       &x,
                             const TrilinosWrappers::MPI::Vector &b)
     {
-      data->solve(x, b);
+      data->solve({&x}, {&b});
+    }
+
+    void MumpsDirect::solve(TrilinosWrappers::MPI::Vector       &x0,
+                            const TrilinosWrappers::MPI::Vector &b0,
+                            TrilinosWrappers::MPI::Vector       &x1,
+                            const TrilinosWrappers::MPI::Vector &b1)
+    {
+      data->solve({&x0, &x1}, {&b0, &b1});
     }
 
     double MumpsDirect::memory_mb() const
@@ -204,7 +212,6 @@ namespace formsolve
       rhs_rows.resize(local_rows.size());
       for (std::size_t k = 0; k < local_rows.size(); ++k)
         rhs_rows[k] = local_rows[k] + 1;
-      rhs.resize(local_rows.size());
 
       if (settings.metis_order)
         {

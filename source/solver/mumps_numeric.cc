@@ -95,27 +95,36 @@ namespace formsolve
       // INFO(23): the unknowns this rank eliminated; its share of every
       // solution comes back there, which may differ after a factorisation
       // (delayed pivots).
-      const int n_pivots = id.info[22];
-      solution_rows.assign(n_pivots, 0);
-      solution.assign(n_pivots, 0);
-      id.lsol_loc = n_pivots;
-      id.isol_loc = solution_rows.data();
-      id.sol_loc  = solution.data();
+      solution_rows.assign(id.info[22], 0);
     }
 
     template <typename Real>
-    void
-    MumpsDirect::Instance<Real>::solve(TrilinosWrappers::MPI::Vector       &x,
-                                       const TrilinosWrappers::MPI::Vector &b)
+    void MumpsDirect::Instance<Real>::solve(
+      const std::vector<TrilinosWrappers::MPI::Vector *>       &x,
+      const std::vector<const TrilinosWrappers::MPI::Vector *> &b)
     {
-      const double *source = b.trilinos_vector()[0];
-      std::copy(source, source + rhs.size(), rhs.begin());
-      id.nloc_rhs = rhs.size();
-      id.lrhs_loc = rhs.size();
-      id.irhs_loc = rhs_rows.data();
-      id.rhs_loc  = rhs.data();
-      id.nrhs     = 1;
-      id.lrhs     = id.n;
+      Assert(x.size() == b.size() && !x.empty(), ExcInternalError());
+      const std::size_t n_columns = b.size();
+      const std::size_t n_rows    = local_rows.size();
+      const std::size_t rhs_lead  = std::max<std::size_t>(n_rows, 1);
+      rhs.resize(rhs_lead * n_columns);
+      for (std::size_t c = 0; c < n_columns; ++c)
+        {
+          const double *source = b[c]->trilinos_vector()[0];
+          std::copy(source, source + n_rows, rhs.begin() + c * rhs_lead);
+        }
+      id.nloc_rhs                     = n_rows;
+      id.lrhs_loc                     = rhs_lead;
+      id.irhs_loc                     = rhs_rows.data();
+      id.rhs_loc                      = rhs.data();
+      id.nrhs                         = n_columns;
+      id.lrhs                         = id.n;
+      const std::size_t n_pivots      = solution_rows.size();
+      const std::size_t solution_lead = std::max<std::size_t>(n_pivots, 1);
+      solution.resize(solution_lead * n_columns);
+      id.lsol_loc = solution_lead;
+      id.isol_loc = solution_rows.data();
+      id.sol_loc  = solution.data();
       call(3, "solve");
       // The export is rebuilt only when a factorisation moved the rows of
       // the solution on some rank.
@@ -128,7 +137,7 @@ namespace formsolve
           std::vector<int> rows(solution_rows.size());
           for (std::size_t k = 0; k < rows.size(); ++k)
             rows[k] = solution_rows[k] - 1;
-          const Epetra_BlockMap &target = x.trilinos_vector().Map();
+          const Epetra_BlockMap &target = x[0]->trilinos_vector().Map();
           solution_map                  = std::make_unique<Epetra_Map>(-1,
                                                       rows.size(),
                                                       rows.data(),
@@ -137,9 +146,15 @@ namespace formsolve
           to_owner = std::make_unique<Epetra_Export>(*solution_map, target);
         }
       Epetra_Vector values(*solution_map);
-      std::copy(solution.begin(), solution.end(), values.Values());
-      AssertThrow(x.trilinos_vector().Export(values, *to_owner, Insert) == 0,
-                  ExcMessage("MUMPS: the export of the solution failed"));
+      for (std::size_t c = 0; c < n_columns; ++c)
+        {
+          const auto column = solution.begin() + c * solution_lead;
+          std::copy(column, column + n_pivots, values.Values());
+          AssertThrow(x[c]->trilinos_vector().Export(values,
+                                                     *to_owner,
+                                                     Insert) == 0,
+                      ExcMessage("MUMPS: the export of the solution failed"));
+        }
     }
 
     template <typename Real>
@@ -163,8 +178,8 @@ namespace formsolve
   template void MumpsDirect::Instance<Real>::factorise(           \
     const TrilinosWrappers::SparseMatrix &);                      \
   template void MumpsDirect::Instance<Real>::solve(               \
-    TrilinosWrappers::MPI::Vector &,                              \
-    const TrilinosWrappers::MPI::Vector &);                       \
+    const std::vector<TrilinosWrappers::MPI::Vector *> &,         \
+    const std::vector<const TrilinosWrappers::MPI::Vector *> &);  \
   template double MumpsDirect::Instance<Real>::memory_mb() const; \
   template double MumpsDirect::Instance<Real>::factor_entries() const;
     INSTANTIATE(double)

@@ -24,58 +24,17 @@
 #include <formsolve/solver/mumps_direct.h>
 
 #include "check.h"
+#include "penalty_operator.h"
 
 #include <sstream>
 
 using namespace dealii;
-using TVector = TrilinosWrappers::MPI::Vector;
+using TVector = test::TVector;
 
-namespace
-{
-  const MPI_Comm comm = MPI_COMM_WORLD;
-
-  IndexSet owned_rows(const unsigned int n)
-  {
-    const unsigned int rank = Utilities::MPI::this_mpi_process(comm),
-                       size = Utilities::MPI::n_mpi_processes(comm);
-    IndexSet owned(n);
-    owned.add_range(rank * n / size, (rank + 1) * n / size);
-    return owned;
-  }
-
-  // -u'' + c u' on n nodes, every 37th row with a penalty 1e4 on its
-  // diagonal (a node in contact).
-  void build(TrilinosWrappers::SparseMatrix &A, const IndexSet &owned)
-  {
-    const unsigned int     n = owned.size();
-    DynamicSparsityPattern dsp(n, n, owned);
-    for (const auto i : owned)
-      for (unsigned int j = (i > 0 ? i - 1 : 0);
-           j <= std::min<unsigned>(i + 1, n - 1);
-           ++j)
-        dsp.add(i, j);
-    A.reinit(owned, owned, dsp, comm);
-    for (const auto i : owned)
-      {
-        A.set(i, i, 2. + (i % 37 == 0 ? 1e4 : 0.));
-        if (i > 0)
-          A.set(i, i - 1, -1. - 0.3);
-        if (i + 1 < n)
-          A.set(i, i + 1, -1. + 0.3);
-      }
-    A.compress(VectorOperation::insert);
-  }
-
-  double true_residual(const TrilinosWrappers::SparseMatrix &A,
-                       const TVector                        &x,
-                       const TVector                        &b)
-  {
-    TVector r(b);
-    A.vmult(r, x);
-    r.sadd(-1., 1., b);
-    return r.l2_norm();
-  }
-} // namespace
+using test::build;
+using test::comm;
+using test::owned_rows;
+using test::true_residual;
 
 int main(int argc, char **argv)
 {

@@ -49,6 +49,18 @@ namespace formsolve
       unsigned int solve_again(dealii::TrilinosWrappers::MPI::Vector       &x,
                                const dealii::TrilinosWrappers::MPI::Vector &b);
 
+      /// Solves A x = b and A y = c (one matrix, two right-hand sides).
+      /// With MUMPS the two solves run side by side: each application of
+      /// the factors serves both right-hand sides in one pass over them.
+      /// Otherwise solve(), then solve_again(). Returns the iterations of
+      /// both; @p may_reuse as for solve().
+      unsigned int solve_pair(const dealii::TrilinosWrappers::SparseMatrix &A,
+                              dealii::TrilinosWrappers::MPI::Vector        &x,
+                              const dealii::TrilinosWrappers::MPI::Vector  &b,
+                              dealii::TrilinosWrappers::MPI::Vector        &y,
+                              const dealii::TrilinosWrappers::MPI::Vector  &c,
+                              const bool may_reuse = true);
+
       /// Inexact Newton: GMRES with factors stops at this relative residual
       /// if it is above Reuse tolerance (0: at Reuse tolerance).
       void set_forcing(const double tolerance) { forcing = tolerance; }
@@ -129,11 +141,42 @@ namespace formsolve
                               const dealii::TrilinosWrappers::MPI::Vector  &b,
                               const unsigned int max_iterations,
                               unsigned int      &iterations);
+      /// GMRES as gmres_with_factors() for A x = b and A y = c side by side,
+      /// within @p max_iterations each; whether each converged goes to
+      /// @p converged, the iterations of both are returned.
+      unsigned int
+      gmres_pair_with_factors(const dealii::TrilinosWrappers::SparseMatrix &A,
+                              dealii::TrilinosWrappers::MPI::Vector        &x,
+                              const dealii::TrilinosWrappers::MPI::Vector  &b,
+                              dealii::TrilinosWrappers::MPI::Vector        &y,
+                              const dealii::TrilinosWrappers::MPI::Vector  &c,
+                              const unsigned int max_iterations,
+                              bool (&converged)[2]);
       /// x = A^-1 b with the factors of A's current values: one substitution,
       /// or GMRES when they are low-rank; returns the iterations.
       unsigned int
       apply_current_factors(dealii::TrilinosWrappers::MPI::Vector       &x,
                             const dealii::TrilinosWrappers::MPI::Vector &b);
+      /// apply_current_factors() to A x = b and A y = c side by side.
+      unsigned int
+      apply_current_factors(dealii::TrilinosWrappers::MPI::Vector       &x,
+                            const dealii::TrilinosWrappers::MPI::Vector &b,
+                            dealii::TrilinosWrappers::MPI::Vector       &y,
+                            const dealii::TrilinosWrappers::MPI::Vector &c);
+      /// The factors are those of the matrix, in double precision: one
+      /// substitution solves.
+      bool exact_factors() const;
+      /// How many GMRES iterations the current approximate factors may take
+      /// to the tolerance.
+      unsigned int approximate_factors_limit() const;
+      /// Throws the message for GMRES that failed with approximate factors
+      /// within @p limit iterations.
+      [[noreturn]] void
+      approximate_factors_failed(const unsigned int limit) const;
+      /// Numeric factorisation of the last matrix's current values.
+      void factorise_current();
+      /// The analysis of @p A's pattern unless it is the factorised one.
+      void analyse_if_new(const dealii::TrilinosWrappers::SparseMatrix &A);
       /// Numeric factorisation of the operator's current values, then
       /// apply_current_factors().
       unsigned int
@@ -142,6 +185,11 @@ namespace formsolve
       /// One forward and back substitution with the stored factorisation.
       void substitute(dealii::TrilinosWrappers::MPI::Vector       &x,
                       const dealii::TrilinosWrappers::MPI::Vector &b);
+      /// The same for two right-hand sides (MUMPS: in one solve).
+      void substitute(dealii::TrilinosWrappers::MPI::Vector       &x,
+                      const dealii::TrilinosWrappers::MPI::Vector &b,
+                      dealii::TrilinosWrappers::MPI::Vector       &y,
+                      const dealii::TrilinosWrappers::MPI::Vector &c);
 
       unsigned int solve_direct(const dealii::TrilinosWrappers::SparseMatrix &A,
                                 dealii::TrilinosWrappers::MPI::Vector        &x,

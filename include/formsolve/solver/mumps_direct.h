@@ -63,6 +63,13 @@ namespace formsolve
       /// x = A^-1 b with the stored factors.
       void solve(dealii::TrilinosWrappers::MPI::Vector       &x,
                  const dealii::TrilinosWrappers::MPI::Vector &b);
+      /// x0 = A^-1 b0 and x1 = A^-1 b1 in one solve: one pass over the
+      /// factors for both (the substitutions read the factors from memory,
+      /// which is most of their cost).
+      void solve(dealii::TrilinosWrappers::MPI::Vector       &x0,
+                 const dealii::TrilinosWrappers::MPI::Vector &b0,
+                 dealii::TrilinosWrappers::MPI::Vector       &x1,
+                 const dealii::TrilinosWrappers::MPI::Vector &b1);
 
       /// The factors are those of the symmetric part, not of the matrix.
       bool factors_symmetric_part() const { return settings.symmetric_part; }

@@ -44,11 +44,14 @@ namespace formsolve
       virtual ~Data() = default;
       virtual void analyse(const dealii::TrilinosWrappers::SparseMatrix &A) = 0;
       virtual void
-      factorise(const dealii::TrilinosWrappers::SparseMatrix &A)           = 0;
-      virtual void   solve(dealii::TrilinosWrappers::MPI::Vector       &x,
-                           const dealii::TrilinosWrappers::MPI::Vector &b) = 0;
-      virtual double memory_mb() const                                     = 0;
-      virtual double factor_entries() const                                = 0;
+      factorise(const dealii::TrilinosWrappers::SparseMatrix &A) = 0;
+      /// x[c] = A^-1 b[c] for every column c, in one MUMPS solve.
+      virtual void
+      solve(const std::vector<dealii::TrilinosWrappers::MPI::Vector *> &x,
+            const std::vector<const dealii::TrilinosWrappers::MPI::Vector *>
+              &b)                           = 0;
+      virtual double memory_mb() const      = 0;
+      virtual double factor_entries() const = 0;
     };
 
     template <typename Real>
@@ -59,8 +62,10 @@ namespace formsolve
       ~Instance() override;
       void analyse(const dealii::TrilinosWrappers::SparseMatrix &A) override;
       void factorise(const dealii::TrilinosWrappers::SparseMatrix &A) override;
-      void solve(dealii::TrilinosWrappers::MPI::Vector       &x,
-                 const dealii::TrilinosWrappers::MPI::Vector &b) override;
+      void
+      solve(const std::vector<dealii::TrilinosWrappers::MPI::Vector *>       &x,
+            const std::vector<const dealii::TrilinosWrappers::MPI::Vector *> &b)
+        override;
       double memory_mb() const override;
       double factor_entries() const override;
 
@@ -86,7 +91,9 @@ namespace formsolve
       std::vector<Real> rhs;
       /// The distributed solution: the unknowns this rank eliminated
       /// (ISOL_loc, 1-based), their values, and the export to the vector's
-      /// rows, rebuilt when a solve returns other rows on any rank.
+      /// rows, rebuilt when a solve returns other rows on any rank. With
+      /// several right-hand sides, column c starts at c times the larger of 1
+      /// and the count of rows (MUMPS's leading dimensions).
       std::vector<int>               solution_rows, exported_rows;
       std::vector<Real>              solution;
       std::unique_ptr<Epetra_Map>    solution_map;
