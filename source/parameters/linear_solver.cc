@@ -187,6 +187,17 @@ namespace formsolve
         Integer(1, 1000),
         "Factor precision = single: GMRES iterations allowed before the "
         "linear solve fails (the Newton step is then cut back).");
+      prm.declare_entry(
+        "Narrow BLAS calls",
+        "true",
+        Bool(),
+        "true: BLAS-3 calls with one or two columns (GEMM, TRSM), which "
+        "MUMPS's substitutions make for every right-hand side, go column by "
+        "column to the matrix-vector kernels (GEMV, TRSV) of the same BLAS; "
+        "Debian's OpenBLAS packs the whole matrix for them. Every caller in "
+        "the process is affected, and only in speed and round-off "
+        "(doc/performance.md, \"Narrow BLAS calls\"). false: every call as "
+        "made.");
       prm.leave_subsection();
     }
 
@@ -232,6 +243,7 @@ namespace formsolve
                                 : FactorPrecision::double_precision;
       single_precision_iterations =
         prm.get_integer("Single-precision iterations");
+      narrow_blas_calls = prm.get_bool("Narrow BLAS calls");
       prm.leave_subsection();
     }
 

@@ -3,6 +3,7 @@
 
 #include <formsolve/app/blas_kernel.h>
 #include <formsolve/app/error_exit.h>
+#include <formsolve/app/narrow_blas.h>
 #include <formsolve/geometry/blank_mesh.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/postprocess/history_writer.h>
@@ -43,7 +44,9 @@ namespace formsolve
                    state.tools,
                    geometry::initial_mesh_level(run.mesh))
         , sheet(run)
-    {}
+    {
+      app::set_narrow_blas(run.linear.narrow_blas_calls);
+    }
 
     template <int dim>
     bool TimeLoop<dim>::adapt()
@@ -189,7 +192,8 @@ namespace formsolve
             << ", " << prm.mesh.layers << " layers), contact "
             << step_solver.strategy_name() << ", forces scaled by "
             << prm.geometry.symmetry_factor() << " to the full part; BLAS "
-            << app::blas_kernel() << "\n";
+            << app::blas_kernel()
+            << (app::narrow_blas() ? ", narrow calls to BLAS-2" : "") << "\n";
       if (resume)
         pcout << "resumed from the checkpoint at step " << state.step
               << ", punch travel " << state.tools.punch_travel() << " mm"

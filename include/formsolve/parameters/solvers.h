@@ -174,6 +174,9 @@ namespace formsolve
       FactorPrecision factor_precision = FactorPrecision::double_precision;
       /// GMRES iterations allowed with single-precision factors.
       unsigned int single_precision_iterations = 20;
+      /// BLAS-3 calls with one or two columns sent to BLAS-2
+      /// (app/narrow_blas.h).
+      bool narrow_blas_calls = true;
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);
