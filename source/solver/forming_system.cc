@@ -42,9 +42,9 @@ namespace formsolve
       // coexist (a remeshing, the coarse start).
       linear_solver.reset();
       matrix.clear();
-      body_matrix.clear();
-      scatter = CellScatter<dim>();
-      dual    = DualStress();
+      contact_in_matrix = false;
+      scatter           = CellScatter<dim>();
+      dual              = DualStress();
       {
         DynamicSparsityPattern dsp(state.relevant);
         // ML's line detection needs every ghost node with all its
@@ -63,8 +63,6 @@ namespace formsolve
         matrix.reinit(state.owned, state.owned, dsp, state.comm);
       } // the pattern (0.4 kB/DoF) is freed before the cell map is built
       scatter.reinit(state.dof_handler, state.constraints, matrix);
-      if (strategy.needs_system())
-        body_matrix.reinit(matrix);
       residual.reinit(state.owned, state.comm);
       body_residual.reinit(state.owned, state.comm);
       factor_reuse.reinit(state.owned, state.comm);
@@ -114,14 +112,14 @@ namespace formsolve
     {
       if (!strategy.needs_system())
         return;
+      // The body tangent for the strategy; the next solve assembles anew.
+      remove_contact_stiffness();
       TimerOutput::Scope t(timer, "penalty estimate");
-      strategy.converged(state.contact_set,
-                         state.tools,
-                         contact::SystemView{&body_residual,
-                                             &body_matrix,
-                                             &state.constraints,
-                                             dt},
-                         state.contact_state);
+      strategy.converged(
+        state.contact_set,
+        state.tools,
+        contact::SystemView{&body_residual, &matrix, &state.constraints, dt},
+        state.contact_state);
     }
 
     template <int dim>
@@ -217,9 +215,9 @@ namespace formsolve
       bool estimate = !strategy.needs_system();
       if (strategy.needs_system() && with_matrix)
         {
-          // Keep the body system for update_penalty(); estimate here only when
-          // there are no factors for these pairs yet.
-          body_matrix.copy_from(matrix);
+          // Keep the body residual for update_penalty() (the body tangent
+          // comes back by remove_contact_stiffness()); estimate here only
+          // when there are no factors for these pairs yet.
           body_residual = residual;
           // The estimate is collective: decide on all ranks alike.
           estimate = Utilities::MPI::max(int(epsilon.size() !=
@@ -265,6 +263,8 @@ namespace formsolve
                                  state.constraints,
                                  with_matrix ? &matrix : nullptr,
                                  residual);
+      if (with_matrix)
+        contact_in_matrix = true;
       if (holder_controlled())
         holder.assemble(state.contact_set,
                         epsilon,
@@ -277,15 +277,35 @@ namespace formsolve
     }
 
     template <int dim>
+    void FormingSystem<dim>::remove_contact_stiffness()
+    {
+      // The matrix holds K_b + K_c of the last assembly: the pairs, factors,
+      // tools and tangent type it was made with are still those of the
+      // state (no search and no estimate since).
+      Assert(contact_in_matrix, ExcInternalError());
+      TimerOutput::Scope t(timer, "assembly: contact terms");
+      contact::remove_contact_stiffness(state.contact_set,
+                                        epsilon,
+                                        state.tools,
+                                        prm.contact.regularisation_velocity,
+                                        dt,
+                                        last_newton,
+                                        prm.nonlinear.symmetrise_friction,
+                                        state.constraints,
+                                        matrix);
+      contact_in_matrix = false;
+    }
+
+    template <int dim>
     double FormingSystem<dim>::update_penalty()
     {
       if (!strategy.needs_system())
         return -1;
-      estimate_penalty(body_residual, body_matrix);
+      remove_contact_stiffness();
+      estimate_penalty(body_residual, matrix);
       // Newton estimates here once per accepted iterate, the predictor first.
       predictor_iterate = false;
-      matrix.copy_from(body_matrix);
-      residual = body_residual;
+      residual          = body_residual;
       // The copy leaves the vector in 'insert' mode; settle it on every rank
       // now, before ranks with and without contact pairs start adding.
       residual.compress(VectorOperation::insert);

@@ -114,6 +114,9 @@ namespace formsolve
       /// Contact forces and stiffness with the current factors added to the
       /// matrix and residual; holder coupling terms.
       void add_contact_terms(const bool with_matrix = true);
+      /// The contact stiffness of the last assembly taken out of the matrix:
+      /// the body tangent K_b, for the penalty estimate.
+      void remove_contact_stiffness();
       /// For the iteration log: pairs closed and opened per tool since the
       /// last search (closed, opened; summed over ranks).
       void count_changes();
@@ -128,10 +131,12 @@ namespace formsolve
 
       MatrixType       matrix;
       CellScatter<dim> scatter; // positions of the cell tangents in matrix
-      /// Body system (no contact) of the last assembly, kept for penalty
-      /// estimates at accepted iterates.
-      MatrixType          body_matrix;
-      VectorType          residual, body_residual;
+      /// The body residual (no contact) of the last assembly, kept for
+      /// penalty estimates at accepted iterates; the body tangent is the
+      /// matrix after remove_contact_stiffness().
+      VectorType residual, body_residual;
+      /// The matrix holds the contact stiffness of the last assembly.
+      bool                contact_in_matrix = false;
       FactorReuse         factor_reuse;
       std::vector<double> epsilon;
       std::vector<bool>   last_active;
