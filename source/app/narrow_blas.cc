@@ -64,31 +64,9 @@ namespace
   constexpr int max_columns = 2;
 
   template <typename Real>
-  using Gemm = void (*)(const char *,
-                        const char *,
-                        const int *,
-                        const int *,
-                        const int *,
-                        const Real *,
-                        const Real *,
-                        const int *,
-                        const Real *,
-                        const int *,
-                        const Real *,
-                        Real *,
-                        const int *);
+  using Gemm = formsolve::app::Gemm<Real> *;
   template <typename Real>
-  using Trsm = void (*)(const char *,
-                        const char *,
-                        const char *,
-                        const char *,
-                        const int *,
-                        const int *,
-                        const Real *,
-                        const Real *,
-                        const int *,
-                        Real *,
-                        const int *);
+  using Trsm = formsolve::app::Trsm<Real> *;
 
   template <typename Real>
   struct Blas;

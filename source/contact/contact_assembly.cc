@@ -11,49 +11,6 @@ namespace formsolve
   {
     using namespace dealii;
 
-    namespace
-    {
-      /// @p add(K_c, r_c, dofs) for the nodal stiffness and residual of
-      /// each active pair.
-      template <int dim, typename Add>
-      void for_each_active_pair(const ContactSet<dim>     &set,
-                                const std::vector<double> &epsilon,
-                                const tools::ToolSet<dim> &tools,
-                                const double               v0,
-                                const double               dt,
-                                const bool                 newton,
-                                const bool                 symmetrise,
-                                const Add                 &add)
-      {
-        FullMatrix<double>                   Kc(dim, dim);
-        Vector<double>                       rc(dim);
-        std::vector<types::global_dof_index> node_dofs(dim);
-        for (unsigned int k = 0; k < set.pairs.size(); ++k)
-          {
-            const auto &pair = set.pairs[k];
-            if (!pair.active)
-              continue;
-            const auto f =
-              penalty_friction_force(pair,
-                                     epsilon[k],
-                                     tools.friction_coefficient(pair.tool),
-                                     v0,
-                                     dt,
-                                     newton);
-            for (unsigned int a = 0; a < dim; ++a)
-              {
-                node_dofs[a] = set.nodes[pair.node].dofs[a];
-                rc[a]        = -f.force[a];
-                for (unsigned int b = 0; b < dim; ++b)
-                  Kc(a, b) = symmetrise
-                               ? 0.5 * (f.stiffness[a][b] + f.stiffness[b][a])
-                               : f.stiffness[a][b];
-              }
-            add(Kc, rc, node_dofs);
-          }
-      }
-    } // namespace
-
     template <int dim>
     void add_contact_terms(const ContactSet<dim>           &set,
                            const std::vector<double>       &epsilon,
@@ -64,80 +21,63 @@ namespace formsolve
                            const bool                       symmetrise,
                            const AffineConstraints<double> &constraints,
                            TrilinosWrappers::SparseMatrix  *matrix,
-                           TrilinosWrappers::MPI::Vector   &residual)
+                           TrilinosWrappers::MPI::Vector   *residual,
+                           const double                     sign)
     {
-      for_each_active_pair(
-        set,
-        epsilon,
-        tools,
-        v0,
-        dt,
-        newton,
-        symmetrise,
-        [&](const FullMatrix<double>                   &Kc,
-            const Vector<double>                       &rc,
-            const std::vector<types::global_dof_index> &dofs) {
+      FullMatrix<double>                   Kc(dim, dim);
+      Vector<double>                       rc(dim);
+      std::vector<types::global_dof_index> node_dofs(dim);
+      for (unsigned int k = 0; k < set.pairs.size(); ++k)
+        {
+          const auto &pair = set.pairs[k];
+          if (!pair.active)
+            continue;
+          const auto f =
+            penalty_friction_force(pair,
+                                   epsilon[k],
+                                   tools.friction_coefficient(pair.tool),
+                                   v0,
+                                   dt,
+                                   newton);
+          for (unsigned int a = 0; a < dim; ++a)
+            {
+              node_dofs[a] = set.nodes[pair.node].dofs[a];
+              rc[a]        = -sign * f.force[a];
+              for (unsigned int b = 0; b < dim; ++b)
+                Kc(a, b) =
+                  sign * (symmetrise
+                            ? 0.5 * (f.stiffness[a][b] + f.stiffness[b][a])
+                            : f.stiffness[a][b]);
+            }
           // Rows and columns given apart: no entries on constrained
-          // diagonals, which remove_contact_stiffness() could not undo
-          // (deal.II adds |K_c(i,i)| there whatever the sign).
+          // diagonals, which sign = -1 could not undo (deal.II adds
+          // |K_c(i,i)| there whatever the sign).
           if (matrix)
-            constraints.distribute_local_to_global(Kc, dofs, dofs, *matrix);
-          constraints.distribute_local_to_global(rc, dofs, residual);
-        });
+            constraints.distribute_local_to_global(Kc,
+                                                   node_dofs,
+                                                   node_dofs,
+                                                   *matrix);
+          if (residual)
+            constraints.distribute_local_to_global(rc, node_dofs, *residual);
+        }
       if (matrix)
         matrix->compress(VectorOperation::add);
-      residual.compress(VectorOperation::add);
+      if (residual)
+        residual->compress(VectorOperation::add);
     }
 
-    template <int dim>
-    void remove_contact_stiffness(const ContactSet<dim>           &set,
-                                  const std::vector<double>       &epsilon,
-                                  const tools::ToolSet<dim>       &tools,
-                                  const double                     v0,
-                                  const double                     dt,
-                                  const bool                       newton,
-                                  const bool                       symmetrise,
-                                  const AffineConstraints<double> &constraints,
-                                  TrilinosWrappers::SparseMatrix  &matrix)
-    {
-      FullMatrix<double> minus(dim, dim);
-      for_each_active_pair(
-        set,
-        epsilon,
-        tools,
-        v0,
-        dt,
-        newton,
-        symmetrise,
-        [&](const FullMatrix<double> &Kc,
-            const Vector<double> &,
-            const std::vector<types::global_dof_index> &dofs) {
-          minus.equ(-1., Kc);
-          constraints.distribute_local_to_global(minus, dofs, dofs, matrix);
-        });
-      matrix.compress(VectorOperation::add);
-    }
-
-#define INSTANTIATE(dim)                                                    \
-  template void add_contact_terms(const ContactSet<dim> &,                  \
-                                  const std::vector<double> &,              \
-                                  const tools::ToolSet<dim> &,              \
-                                  double,                                   \
-                                  double,                                   \
-                                  bool,                                     \
-                                  bool,                                     \
-                                  const AffineConstraints<double> &,        \
-                                  TrilinosWrappers::SparseMatrix *,         \
-                                  TrilinosWrappers::MPI::Vector &);         \
-  template void remove_contact_stiffness(const ContactSet<dim> &,           \
-                                         const std::vector<double> &,       \
-                                         const tools::ToolSet<dim> &,       \
-                                         double,                            \
-                                         double,                            \
-                                         bool,                              \
-                                         bool,                              \
-                                         const AffineConstraints<double> &, \
-                                         TrilinosWrappers::SparseMatrix &);
+#define INSTANTIATE(dim)                                             \
+  template void add_contact_terms(const ContactSet<dim> &,           \
+                                  const std::vector<double> &,       \
+                                  const tools::ToolSet<dim> &,       \
+                                  double,                            \
+                                  double,                            \
+                                  bool,                              \
+                                  bool,                              \
+                                  const AffineConstraints<double> &, \
+                                  TrilinosWrappers::SparseMatrix *,  \
+                                  TrilinosWrappers::MPI::Vector *,   \
+                                  double);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace contact

@@ -250,7 +250,9 @@ namespace formsolve
     }
 
     template <int dim>
-    void FormingSystem<dim>::add_contact_terms(const bool with_matrix)
+    void FormingSystem<dim>::contact_terms(MatrixType  *into_matrix,
+                                           VectorType  *into_residual,
+                                           const double sign)
     {
       TimerOutput::Scope t(timer, "assembly: contact terms");
       contact::add_contact_terms(state.contact_set,
@@ -261,8 +263,15 @@ namespace formsolve
                                  last_newton,
                                  prm.nonlinear.symmetrise_friction,
                                  state.constraints,
-                                 with_matrix ? &matrix : nullptr,
-                                 residual);
+                                 into_matrix,
+                                 into_residual,
+                                 sign);
+    }
+
+    template <int dim>
+    void FormingSystem<dim>::add_contact_terms(const bool with_matrix)
+    {
+      contact_terms(with_matrix ? &matrix : nullptr, &residual, 1.);
       if (with_matrix)
         contact_in_matrix = true;
       if (holder_controlled())
@@ -283,16 +292,7 @@ namespace formsolve
       // tools and tangent type it was made with are still those of the
       // state (no search and no estimate since).
       Assert(contact_in_matrix, ExcInternalError());
-      TimerOutput::Scope t(timer, "assembly: contact terms");
-      contact::remove_contact_stiffness(state.contact_set,
-                                        epsilon,
-                                        state.tools,
-                                        prm.contact.regularisation_velocity,
-                                        dt,
-                                        last_newton,
-                                        prm.nonlinear.symmetrise_friction,
-                                        state.constraints,
-                                        matrix);
+      contact_terms(&matrix, nullptr, -1.);
       contact_in_matrix = false;
     }
 

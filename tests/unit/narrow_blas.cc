@@ -22,85 +22,12 @@
 #include <string>
 #include <vector>
 
-extern "C" {
-void sgemm_(const char *,
-            const char *,
-            const int *,
-            const int *,
-            const int *,
-            const float *,
-            const float *,
-            const int *,
-            const float *,
-            const int *,
-            const float *,
-            float *,
-            const int *);
-void dgemm_(const char *,
-            const char *,
-            const int *,
-            const int *,
-            const int *,
-            const double *,
-            const double *,
-            const int *,
-            const double *,
-            const int *,
-            const double *,
-            double *,
-            const int *);
-void strsm_(const char *,
-            const char *,
-            const char *,
-            const char *,
-            const int *,
-            const int *,
-            const float *,
-            const float *,
-            const int *,
-            float *,
-            const int *);
-void dtrsm_(const char *,
-            const char *,
-            const char *,
-            const char *,
-            const int *,
-            const int *,
-            const double *,
-            const double *,
-            const int *,
-            double *,
-            const int *);
-}
-
 namespace
 {
   template <typename Real>
-  using Gemm = void (*)(const char *,
-                        const char *,
-                        const int *,
-                        const int *,
-                        const int *,
-                        const Real *,
-                        const Real *,
-                        const int *,
-                        const Real *,
-                        const int *,
-                        const Real *,
-                        Real *,
-                        const int *);
+  using Gemm = formsolve::app::Gemm<Real> *;
   template <typename Real>
-  using Trsm = void (*)(const char *,
-                        const char *,
-                        const char *,
-                        const char *,
-                        const int *,
-                        const int *,
-                        const Real *,
-                        const Real *,
-                        const int *,
-                        Real *,
-                        const int *);
+  using Trsm = formsolve::app::Trsm<Real> *;
 
   /// The BLAS library's own function, from the library itself.
   void *library_function(const char *name)

@@ -16,6 +16,37 @@ namespace formsolve
 {
   namespace app
   {
+    /// The Fortran BLAS GEMM and TRSM of one precision: C = alpha op(A)
+    /// op(B) + beta C (transa, transb, m, n, k, alpha, A, lda, B, ldb, beta,
+    /// C, ldc), and op(A) X = alpha B or X op(A) = alpha B, B overwritten
+    /// (side, uplo, transa, diag, m, n, alpha, A, lda, B, ldb).
+    template <typename Real>
+    using Gemm = void(const char *,
+                      const char *,
+                      const int *,
+                      const int *,
+                      const int *,
+                      const Real *,
+                      const Real *,
+                      const int *,
+                      const Real *,
+                      const int *,
+                      const Real *,
+                      Real *,
+                      const int *);
+    template <typename Real>
+    using Trsm = void(const char *,
+                      const char *,
+                      const char *,
+                      const char *,
+                      const int *,
+                      const int *,
+                      const Real *,
+                      const Real *,
+                      const int *,
+                      Real *,
+                      const int *);
+
     /// Whether narrow calls go to BLAS-2 (Linear solver/Narrow BLAS calls;
     /// on until set).
     void set_narrow_blas(const bool on);
@@ -26,3 +57,9 @@ namespace formsolve
     unsigned long narrowed_blas_calls();
   } // namespace app
 } // namespace formsolve
+
+// The core library's definitions.
+extern "C" formsolve::app::Gemm<float>  sgemm_;
+extern "C" formsolve::app::Gemm<double> dgemm_;
+extern "C" formsolve::app::Trsm<float>  strsm_;
+extern "C" formsolve::app::Trsm<double> dtrsm_;

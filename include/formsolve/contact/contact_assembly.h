@@ -16,12 +16,14 @@ namespace formsolve
   namespace contact
   {
     /// r -= f_contact and K += -df/dv for the active (and locked) pairs with
-    /// factors @p epsilon; then compresses @p matrix (if any) and @p residual.
-    /// @p symmetrise: each nodal stiffness enters as (K + K^T)/2 (the
-    /// friction part of K is not symmetric). The stiffness is condensed with
-    /// @p constraints without entries on constrained diagonals (the body's
-    /// keep those rows regular), so that remove_contact_stiffness() can take
-    /// it out again.
+    /// factors @p epsilon, each multiplied by @p sign, into @p matrix and
+    /// @p residual where given; then compresses them. @p symmetrise: each
+    /// nodal stiffness enters as (K + K^T)/2 (the friction part of K is not
+    /// symmetric). The stiffness is condensed with @p constraints without
+    /// entries on constrained diagonals (the body's keep those rows
+    /// regular), so that @p sign = -1 with the same arguments takes out of
+    /// the matrix, up to round-off, what +1 put in: the body tangent comes
+    /// back without a copy of it.
     template <int dim>
     void add_contact_terms(const ContactSet<dim>                   &set,
                            const std::vector<double>               &epsilon,
@@ -32,21 +34,7 @@ namespace formsolve
                            const bool                               symmetrise,
                            const dealii::AffineConstraints<double> &constraints,
                            dealii::TrilinosWrappers::SparseMatrix  *matrix,
-                           dealii::TrilinosWrappers::MPI::Vector   &residual);
-
-    /// K -= -df/dv: takes out of @p matrix, up to round-off, the stiffness
-    /// that add_contact_terms() added with the same arguments, and
-    /// compresses it. The body tangent comes back without a copy of it.
-    template <int dim>
-    void remove_contact_stiffness(
-      const ContactSet<dim>                   &set,
-      const std::vector<double>               &epsilon,
-      const tools::ToolSet<dim>               &tools,
-      const double                             v0,
-      const double                             dt,
-      const bool                               newton,
-      const bool                               symmetrise,
-      const dealii::AffineConstraints<double> &constraints,
-      dealii::TrilinosWrappers::SparseMatrix  &matrix);
+                           dealii::TrilinosWrappers::MPI::Vector   *residual,
+                           const double                             sign = 1);
   } // namespace contact
 } // namespace formsolve

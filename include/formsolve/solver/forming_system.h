@@ -117,6 +117,11 @@ namespace formsolve
       /// The contact stiffness of the last assembly taken out of the matrix:
       /// the body tangent K_b, for the penalty estimate.
       void remove_contact_stiffness();
+      /// contact::add_contact_terms() with the state's pairs, factors and
+      /// tools, times @p sign, into what is given.
+      void contact_terms(MatrixType  *into_matrix,
+                         VectorType  *into_residual,
+                         const double sign);
       /// For the iteration log: pairs closed and opened per tool since the
       /// last search (closed, opened; summed over ranks).
       void count_changes();
