@@ -185,6 +185,17 @@ namespace formsolve
         "the potential, then halving of the bracket (doc/theory.md section "
         "8).");
       prm.declare_entry(
+        "Deferred tangent",
+        "true",
+        Bool(),
+        "Where a Newton step is expected to be the last (quadratic "
+        "convergence predicts |r|/|f| <= Residual tolerance after it, and "
+        "the step itself meets Correction tolerance), assemble the residual "
+        "of its iterate first and the tangent only if the iteration goes on "
+        "(or an adaptive penalty estimate reads it). A wrong guess costs one "
+        "residual assembly; the iterates are the same (doc/theory.md "
+        "section 8).");
+      prm.declare_entry(
         "Line search memory",
         "3",
         Integer(1, 20),
@@ -259,6 +270,7 @@ namespace formsolve
                                  : Predictor::previous_velocity;
       max_line_search_steps  = prm.get_integer("Max line search steps");
       line_search_memory     = prm.get_integer("Line search memory");
+      deferred_tangent       = prm.get_bool("Deferred tangent");
       picard_iterations      = prm.get_integer("Picard iterations");
       picard_fallback        = prm.get_bool("Picard fallback");
       log_iterations         = prm.get_bool("Log iterations");

@@ -3,7 +3,6 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
-#include <formsolve/contact/contact_assembly.h>
 #include <formsolve/contact/contact_predictor.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/solver/forming_system.h>
@@ -43,6 +42,7 @@ namespace formsolve
       linear_solver.reset();
       matrix.clear();
       contact_in_matrix = false;
+      tangent_deferred  = false;
       scatter           = CellScatter<dim>();
       dual              = DualStress();
       {
@@ -91,6 +91,7 @@ namespace formsolve
       // linearisation point lies in another configuration (and a resumed run
       // must iterate as the uninterrupted one).
       dual.reset();
+      tangent_deferred  = false;
       predictor_iterate = true;
       hold_holder       = true;
       step_max_linear   = 0;
@@ -105,21 +106,6 @@ namespace formsolve
       factor_reuse.begin_solve();
       w_accepted = w_trial = state.holder.velocity;
       dw                   = 0;
-    }
-
-    template <int dim>
-    void FormingSystem<dim>::end_solve()
-    {
-      if (!strategy.needs_system())
-        return;
-      // The body tangent for the strategy; the next solve assembles anew.
-      remove_contact_stiffness();
-      TimerOutput::Scope t(timer, "penalty estimate");
-      strategy.converged(
-        state.contact_set,
-        state.tools,
-        contact::SystemView{&body_residual, &matrix, &state.constraints, dt},
-        state.contact_state);
     }
 
     template <int dim>
@@ -164,6 +150,32 @@ namespace formsolve
     }
 
     template <int dim>
+    double FormingSystem<dim>::assemble_deferred(const VectorType &v,
+                                                 const bool        newton)
+    {
+      const double r   = evaluate(v, newton, false);
+      deferred_point   = v;
+      deferred_newton  = newton;
+      tangent_deferred = true;
+      return r;
+    }
+
+    template <int dim>
+    void FormingSystem<dim>::complete_tangent()
+    {
+      if (!tangent_deferred)
+        return;
+      // The stress-velocity tangent of the trial is linearised about the
+      // iterate before it, as in an assembly before the acceptance.
+      const bool accepted = deferred_accepted;
+      if (accepted && use_dual)
+        dual.revert();
+      assemble(deferred_point, deferred_newton);
+      if (accepted && use_dual)
+        dual.accept();
+    }
+
+    template <int dim>
     double FormingSystem<dim>::assemble_exact(const VectorType &v)
     {
       dual.restart(assembler.cutoff_rate(), assembler.smooth_rigid_zone());
@@ -184,6 +196,8 @@ namespace formsolve
                                         const bool        newton,
                                         const bool        with_matrix)
     {
+      tangent_deferred  = false; // a new trial: a deferred one is dropped
+      deferred_accepted = false;
       {
         TimerOutput::Scope t(timer, "contact");
         find_pairs(v, w_trial);
@@ -234,101 +248,9 @@ namespace formsolve
     }
 
     template <int dim>
-    void FormingSystem<dim>::estimate_penalty(const VectorType &r_b,
-                                              const MatrixType &K_b)
-    {
-      TimerOutput::Scope t(timer, "penalty estimate");
-      strategy.estimate(state.contact_set,
-                        state.tools,
-                        contact::SystemView{&r_b,
-                                            &K_b,
-                                            &state.constraints,
-                                            dt,
-                                            predictor_iterate},
-                        state.contact_state,
-                        epsilon);
-    }
-
-    template <int dim>
-    void FormingSystem<dim>::contact_terms(MatrixType  *into_matrix,
-                                           VectorType  *into_residual,
-                                           const double sign)
-    {
-      TimerOutput::Scope t(timer, "assembly: contact terms");
-      contact::add_contact_terms(state.contact_set,
-                                 epsilon,
-                                 state.tools,
-                                 prm.contact.regularisation_velocity,
-                                 dt,
-                                 last_newton,
-                                 prm.nonlinear.symmetrise_friction,
-                                 state.constraints,
-                                 into_matrix,
-                                 into_residual,
-                                 sign);
-    }
-
-    template <int dim>
-    void FormingSystem<dim>::add_contact_terms(const bool with_matrix)
-    {
-      contact_terms(with_matrix ? &matrix : nullptr, &residual, 1.);
-      if (with_matrix)
-        contact_in_matrix = true;
-      if (holder_controlled())
-        holder.assemble(state.contact_set,
-                        epsilon,
-                        state.tools,
-                        prm.contact.regularisation_velocity,
-                        dt,
-                        last_newton,
-                        state.constraints,
-                        state.holder.target);
-    }
-
-    template <int dim>
-    void FormingSystem<dim>::remove_contact_stiffness()
-    {
-      // The matrix holds K_b + K_c of the last assembly: the pairs, factors,
-      // tools and tangent type it was made with are still those of the
-      // state (no search and no estimate since).
-      Assert(contact_in_matrix, ExcInternalError());
-      contact_terms(&matrix, nullptr, -1.);
-      contact_in_matrix = false;
-    }
-
-    template <int dim>
-    double FormingSystem<dim>::update_penalty()
-    {
-      if (!strategy.needs_system())
-        return -1;
-      remove_contact_stiffness();
-      estimate_penalty(body_residual, matrix);
-      // Newton estimates here once per accepted iterate, the predictor first.
-      predictor_iterate = false;
-      residual          = body_residual;
-      // The copy leaves the vector in 'insert' mode; settle it on every rank
-      // now, before ranks with and without contact pairs start adding.
-      residual.compress(VectorOperation::insert);
-      add_contact_terms();
-      return residual.l2_norm();
-    }
-
-    template <int dim>
-    double FormingSystem<dim>::correct_penalty()
-    {
-      if (!strategy.needs_system() || !strategy.tighten(state.contact_set,
-                                                        state.tools,
-                                                        state.contact_state,
-                                                        state.comm))
-        return -1;
-      // Estimate again with the new scales (not frozen) at this iterate.
-      strategy.begin_solve();
-      return update_penalty();
-    }
-
-    template <int dim>
     unsigned int FormingSystem<dim>::solve(VectorType &dv)
     {
+      complete_tangent();
       TimerOutput::Scope t(timer, "linear solve");
       VectorType         rhs(residual);
       rhs *= -1.;
@@ -394,7 +316,8 @@ namespace formsolve
     template <int dim>
     void FormingSystem<dim>::accept_step()
     {
-      w_accepted = w_trial;
+      deferred_accepted = tangent_deferred;
+      w_accepted        = w_trial;
       if (!use_dual)
         return;
       if (prm.nonlinear.log_iterations)

@@ -50,6 +50,25 @@ namespace formsolve
       // The last correction, for the contraction estimate.
       bool   last_full = false, last_stalled = false;
       double last_step = 0, last_xstep = 0;
+      // The error a correction (step, xstep) leaves (doc/theory.md section
+      // 8): where it and the last one are full steps that contract by
+      // theta <= 1/2, at most theta/(1 - theta) of it; else the correction
+      // itself.
+      const auto error_left =
+        [&](const double step, const double xstep, const bool full) {
+          if (prm.correction_measure ==
+                parameters::CorrectionMeasure::contraction &&
+              full && last_full && last_step > 0)
+            {
+              const double theta =
+                std::max(step / last_step,
+                         last_xstep > 0 ? xstep / last_xstep : 0.);
+              if (theta <= 0.5)
+                return theta / (1 - theta);
+            }
+          return 1.;
+        };
+      double r_prev = -1; // |r| of the iterate before v
       // Inexact Newton: once an inexact direction has failed in this solve,
       // the linear solves go to Reuse tolerance again.
       bool tight = prm.forcing == 0;
@@ -112,10 +131,11 @@ namespace formsolve
           // halving where g < 0 but the merit grew. When the trials run out,
           // the longest descending one is taken. The full step assembles the
           // matrix with the residual (it serves the next iteration when
-          // accepted); shorter trials the residual only, and the accepted one
+          // accepted), or defers it where it is expected to be the last
+          // iterate; shorter trials the residual only, and the accepted one
           // its matrix afterwards.
           const bool next_newton = fallback == 0 && it >= prm.picard_iterations;
-          bool       stalled = false, with_matrix = true;
+          bool       stalled = false, with_matrix = true, deferred = false;
           const double g0    = system.directional_derivative(dv);
           double       alpha = 1, r_trial = 0, m_trial = 0;
           double       a_lo = 0, a_hi = 1, g_hi = 0;
@@ -125,9 +145,28 @@ namespace formsolve
               trial = v;
               trial.add(alpha, dv);
               system.set_step_length(alpha);
-              with_matrix    = ls == 0;
-              r_trial        = with_matrix ? system.assemble(trial, next_newton)
-                                           : system.assemble_residual(trial);
+              with_matrix = ls == 0;
+              if (ls == 0 && prm.deferred_tangent && next_newton && last_full &&
+                  r_prev > 0)
+                {
+                  // Expected to be the last iterate: the quadratic model
+                  // through the last two residuals, |r|^3/|r_prev|^2, passes
+                  // the tolerance, and the correction meets its own. (The
+                  // linear-rate model |r|^2/|r_prev| deferred half as often
+                  // on the cups, doc/convergence.md.)
+                  const double step  = dv.l2_norm();
+                  const double xstep = system.extra_correction();
+                  const double left  = error_left(step, xstep, true);
+                  deferred =
+                    r * (r / r_prev) * (r / r_prev) <=
+                      prm.residual_tolerance * system.force_scale() &&
+                    left * step <= prm.correction_tolerance * trial.l2_norm() &&
+                    left * xstep <= prm.correction_tolerance;
+                }
+              r_trial        = !with_matrix ? system.assemble_residual(trial)
+                               : deferred
+                                 ? system.assemble_deferred(trial, next_newton)
+                                 : system.assemble(trial, next_newton);
               m_trial        = merit(r_trial);
               const double g = system.directional_derivative(dv);
               const bool   descends = m_trial < m_ref && g < 0;
@@ -216,26 +255,14 @@ namespace formsolve
           const double step    = alpha * dv.l2_norm();
           const double xstep   = alpha * system.extra_correction();
           const double dv_rel  = step / std::max(v.l2_norm(), 1e-300);
-          // The error this correction leaves (doc/theory.md section 8):
-          // where two full steps in a row contract by theta <= 1/2, at most
-          // theta/(1 - theta) of it; else the correction itself.
-          const bool full = alpha == 1 && !changed;
-          double     left = 1;
-          if (prm.correction_measure ==
-                parameters::CorrectionMeasure::contraction &&
-              full && last_full && last_step > 0)
-            {
-              const double theta =
-                std::max(step / last_step,
-                         last_xstep > 0 ? xstep / last_xstep : 0.);
-              if (theta <= 0.5)
-                left = theta / (1 - theta);
-            }
-          last_full  = full;
-          last_step  = step;
-          last_xstep = xstep;
-          r          = r_trial;
-          m          = merit(r);
+          const bool   full    = alpha == 1 && !changed;
+          const double left    = error_left(step, xstep, full);
+          last_full            = full;
+          last_step            = step;
+          last_xstep           = xstep;
+          r_prev               = r;
+          r                    = r_trial;
+          m                    = merit(r);
           merits.push_back(m);
           if (merits.size() > prm.line_search_memory)
             merits.pop_front();
@@ -247,6 +274,7 @@ namespace formsolve
               << (changed ? "  contact set changed" : "")
               << (retry ? "  stalled: exact tangent" : "")
               << (rejected ? "  inexact direction rejected" : "")
+              << (deferred && alpha == 1 ? "  tangent deferred" : "")
               << std::defaultfloat << system.iteration_info() << std::endl;
           // Near convergence, with the contact set settled: the strategy's
           // bound is checked here once; a correction changes the equations,

@@ -58,6 +58,22 @@ namespace formsolve
                             ContactState              &state,
                             std::vector<double>       &epsilon) = 0;
 
+      /// Whether estimate() at @p set would return the factors of its last
+      /// call without reading the system (factors held or frozen); the same
+      /// on all ranks of @p comm. Then an iterate whose tangent was not
+      /// assembled needs none for the estimate.
+      virtual bool holds_factors(const ContactSet<dim> & /*set*/,
+                                 const tools::ToolSet<dim> & /*tools*/,
+                                 const ContactState & /*state*/,
+                                 const bool /*predictor*/,
+                                 const MPI_Comm /*comm*/) const
+      {
+        return !needs_system();
+      }
+
+      /// Whether converged() reads the system.
+      virtual bool reads_converged_system() const { return false; }
+
       /// Called once a solve has converged, with the body system at the
       /// converged iterate, before finish_solve(): a strategy that holds its
       /// factors within solves estimates the next solve's here.

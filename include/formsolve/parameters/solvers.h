@@ -78,12 +78,14 @@ namespace formsolve
       unsigned int      max_line_search_steps = 6;
       /// Nonmonotone line search: a trial must beat the largest merit of
       /// the last line_search_memory iterates; 1 is monotone.
-      unsigned int   line_search_memory = 3;
-      double         forcing            = 0; // inexact Newton; 0: off
-      unsigned int   picard_iterations  = 0;
-      bool           picard_fallback    = true;
-      bool           log_iterations     = false;
-      FirstStepStart first_step_start   = FirstStepStart::coarser_mesh;
+      unsigned int line_search_memory = 3;
+      /// The tangent of an expected last iterate assembled only if needed.
+      bool           deferred_tangent  = true;
+      double         forcing           = 0; // inexact Newton; 0: off
+      unsigned int   picard_iterations = 0;
+      bool           picard_fallback   = true;
+      bool           log_iterations    = false;
+      FirstStepStart first_step_start  = FirstStepStart::coarser_mesh;
       /// The coarser mesh is used only when its cells are on average no
       /// longer than this many sheet thicknesses in the plane.
       double coarse_cell_size_limit = 2;

@@ -43,8 +43,15 @@ namespace formsolve
                    const double       cutoff,
                    const bool         smooth);
 
-      /// The last trial values become the linearisation point.
-      void accept() { accepted = trials; }
+      /// The last trial values become the linearisation point. A swap, not
+      /// a copy: every assembly writes the trials of all points it visits,
+      /// and revert() needs the previous point.
+      void accept() { accepted.swap(trials); }
+
+      /// Undo the last accept() (before any trial() since): the previous
+      /// linearisation point again, the trials as they were. For a tangent
+      /// assembled after its iterate was accepted (a deferred tangent).
+      void revert() { accepted.swap(trials); }
 
       /// For the iteration log, before accept(): the points whose trial
       /// strain rate is at most @p cutoff (rigid), and how many points

@@ -78,10 +78,11 @@ namespace formsolve
       }
 
       // NonlinearSystem
-      double       assemble(const VectorType &v, const bool newton) override;
-      double       assemble_residual(const VectorType &v) override;
-      double       force_scale() const override { return f_scale; }
-      double       directional_derivative(const VectorType &dv) const override;
+      double assemble(const VectorType &v, const bool newton) override;
+      double assemble_residual(const VectorType &v) override;
+      double assemble_deferred(const VectorType &v, const bool newton) override;
+      double force_scale() const override { return f_scale; }
+      double directional_derivative(const VectorType &dv) const override;
       unsigned int solve(VectorType &dv) override;
       void         set_linear_tolerance(const double tolerance) override
       {
@@ -109,6 +110,9 @@ namespace formsolve
       /// with @p with_matrix.
       double
       evaluate(const VectorType &v, const bool newton, const bool with_matrix);
+      /// The deferred tangent of the last evaluation (assemble_deferred()),
+      /// linearised about the iterate its trial was, if any: assembled now.
+      void complete_tangent();
       /// Factors from the body system (r_b, K_b) of the current pairs.
       void estimate_penalty(const VectorType &r_b, const MatrixType &K_b);
       /// Contact forces and stiffness with the current factors added to the
@@ -141,7 +145,12 @@ namespace formsolve
       /// matrix after remove_contact_stiffness().
       VectorType residual, body_residual;
       /// The matrix holds the contact stiffness of the last assembly.
-      bool                contact_in_matrix = false;
+      bool contact_in_matrix = false;
+      /// assemble_deferred(): the point whose tangent is still to come, its
+      /// tangent type, and whether it has been accepted since.
+      VectorType          deferred_point;
+      bool                tangent_deferred = false, deferred_newton = true;
+      bool                deferred_accepted = false;
       FactorReuse         factor_reuse;
       std::vector<double> epsilon;
       std::vector<bool>   last_active;

@@ -29,6 +29,14 @@ namespace formsolve
       {
         return assemble(v, true);
       }
+      /// As assemble(): the residual now, the tangent deferred until the
+      /// system needs it (solve(), a penalty estimate), for a full step
+      /// expected to be the last iterate; if another trial is assembled
+      /// first, it is dropped. The default assembles both now.
+      virtual double assemble_deferred(const VectorType &v, const bool newton)
+      {
+        return assemble(v, newton);
+      }
       /// As assemble(v, true), with the exact derivative of the residual as
       /// the tangent where the system otherwise uses another linearisation
       /// (the stress-velocity tangent). Its direction descends |r|: the

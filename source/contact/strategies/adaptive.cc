@@ -16,6 +16,18 @@ namespace formsolve
 
     namespace
     {
+      /// Status of every pair for the freeze: a pair locked by the chatter
+      /// guard counts as unchanged whatever it does, as in Newton's
+      /// convergence test.
+      template <int dim>
+      std::vector<char> freeze_status(const ContactSet<dim> &set)
+      {
+        std::vector<char> status(set.pairs.size());
+        for (unsigned int k = 0; k < status.size(); ++k)
+          status[k] = set.pairs[k].locked ? 2 : char(set.pairs[k].active);
+        return status;
+      }
+
       /// Whether @p dof hangs (a constraint with masters; not a Dirichlet or
       /// symmetry line).
       bool hanging(const AffineConstraints<double> &c,
@@ -179,16 +191,11 @@ namespace formsolve
              ExcInternalError());
       Assert(state.size() == set.nodes.size() * tools.size(),
              ExcInternalError());
-      const unsigned int n = set.pairs.size();
-      std::vector<bool>  active(n);
-      // Status for the freeze: a pair locked by the chatter guard counts as
-      // unchanged whatever it does, as in Newton's convergence test.
-      std::vector<char> status(n);
+      const unsigned int      n      = set.pairs.size();
+      const std::vector<char> status = freeze_status(set);
+      std::vector<bool>       active(n);
       for (unsigned int k = 0; k < n; ++k)
-        {
-          active[k] = set.pairs[k].active;
-          status[k] = set.pairs[k].locked ? 2 : char(active[k]);
-        }
+        active[k] = set.pairs[k].active;
 
       // Freeze only when the active set repeats on every rank: a decision
       // per rank would make the factors depend on the partition.
@@ -288,6 +295,27 @@ namespace formsolve
       last_status    = status;
       last_epsilon   = epsilon;
       last_stiffness = stiffness_of;
+    }
+
+    template <int dim>
+    bool AdaptivePenalty<dim>::holds_factors(const ContactSet<dim>     &set,
+                                             const tools::ToolSet<dim> &tools,
+                                             const ContactState        &state,
+                                             const bool     predictor,
+                                             const MPI_Comm comm) const
+    {
+      // The branches of estimate() that do not read the system.
+      if (per_step)
+        return held;
+      if (hold_predictor && predictor)
+        return false; // reads the tangent's diagonal for the bounds
+      // Frozen, and no record that would get its first factor.
+      bool frozen = freeze && freeze_status(set) == last_status &&
+                    last_epsilon.size() == set.pairs.size();
+      for (unsigned int k = 0; frozen && k < set.pairs.size(); ++k)
+        frozen = state(set.pairs[k].node, set.pairs[k].tool).factor > 0 ||
+                 start_factor(set, tools, state, k) <= 0;
+      return Utilities::MPI::min(int(frozen), comm) != 0;
     }
 
     template <int dim>

@@ -28,11 +28,18 @@ namespace formsolve
         last_epsilon.clear();
         held = false;
       }
-      void        estimate(const ContactSet<dim>     &set,
-                           const tools::ToolSet<dim> &tools,
-                           const SystemView          &system,
-                           ContactState              &state,
-                           std::vector<double>       &epsilon) override;
+      void estimate(const ContactSet<dim>     &set,
+                    const tools::ToolSet<dim> &tools,
+                    const SystemView          &system,
+                    ContactState              &state,
+                    std::vector<double>       &epsilon) override;
+      bool holds_factors(const ContactSet<dim>     &set,
+                         const tools::ToolSet<dim> &tools,
+                         const ContactState        &state,
+                         const bool                 predictor,
+                         const MPI_Comm             comm) const override;
+      /// per_step: the next solve's factors are estimated at convergence.
+      bool        reads_converged_system() const override { return per_step; }
       void        converged(const ContactSet<dim>     &set,
                             const tools::ToolSet<dim> &tools,
                             const SystemView          &system,
