@@ -76,36 +76,27 @@ namespace
               auto       c = values<Real>(ldc * n, 0.13), reference = c;
               if (beta == 0)
                 c[1] = reference[1] = std::numeric_limits<Real>::quiet_NaN();
+              const auto call = [&](Gemm<Real> f, Real *into) {
+                f(ta,
+                  tb,
+                  &m,
+                  &n,
+                  &k,
+                  &al,
+                  a.data(),
+                  &lda,
+                  b.data(),
+                  &ldb,
+                  &be,
+                  into,
+                  &ldc);
+              };
               const unsigned long before =
                 formsolve::app::narrowed_blas_calls();
-              ours(ta,
-                   tb,
-                   &m,
-                   &n,
-                   &k,
-                   &al,
-                   a.data(),
-                   &lda,
-                   b.data(),
-                   &ldb,
-                   &be,
-                   c.data(),
-                   &ldc);
+              call(ours, c.data());
               const bool narrowed =
                 formsolve::app::narrowed_blas_calls() > before;
-              library(ta,
-                      tb,
-                      &m,
-                      &n,
-                      &k,
-                      &al,
-                      a.data(),
-                      &lda,
-                      b.data(),
-                      &ldb,
-                      &be,
-                      reference.data(),
-                      &ldc);
+              call(library, reference.data());
               const std::string what = kind + " " + ta + tb +
                                        " n=" + std::to_string(n) +
                                        " beta=" + std::to_string(beta);
@@ -136,32 +127,25 @@ namespace
               {
                 const Real al = alpha;
                 auto       b = values<Real>(ldb * n, 0.71), reference = b;
+                const auto call = [&](Trsm<Real> f, Real *into) {
+                  f("L",
+                    uplo,
+                    trans,
+                    diag,
+                    &m,
+                    &n,
+                    &al,
+                    a.data(),
+                    &lda,
+                    into,
+                    &ldb);
+                };
                 const unsigned long before =
                   formsolve::app::narrowed_blas_calls();
-                ours("L",
-                     uplo,
-                     trans,
-                     diag,
-                     &m,
-                     &n,
-                     &al,
-                     a.data(),
-                     &lda,
-                     b.data(),
-                     &ldb);
+                call(ours, b.data());
                 const bool narrowed =
                   formsolve::app::narrowed_blas_calls() > before;
-                library("L",
-                        uplo,
-                        trans,
-                        diag,
-                        &m,
-                        &n,
-                        &al,
-                        a.data(),
-                        &lda,
-                        reference.data(),
-                        &ldb);
+                call(library, reference.data());
                 const std::string what = kind + " " + uplo + trans + diag +
                                          " n=" + std::to_string(n) +
                                          " alpha=" + std::to_string(alpha);
@@ -179,18 +163,9 @@ namespace
     const Real          al = 1;
     auto                b = values<Real>(ldb, 0.5), reference = b;
     const unsigned long before = formsolve::app::narrowed_blas_calls();
-    ours("R", "U", "N", "N", &one, &n, &al, a.data(), &lda, b.data(), &ldb);
-    library("R",
-            "U",
-            "N",
-            "N",
-            &one,
-            &n,
-            &al,
-            a.data(),
-            &lda,
-            reference.data(),
-            &ldb);
+    for (auto [f, into] :
+         {std::pair{ours, b.data()}, std::pair{library, reference.data()}})
+      f("R", "U", "N", "N", &one, &n, &al, a.data(), &lda, into, &ldb);
     test::close(kind + " side R: passed on unchanged",
                 formsolve::app::narrowed_blas_calls() == before &&
                   max_relative_difference(b, reference) == 0,
