@@ -60,6 +60,29 @@ namespace
     return diff / std::max(size, 1e-300);
   }
 
+  /// Runs @p ours and @p library (each writes its result), then checks
+  /// that ours was narrowed exactly when the call has n <= 2 columns and
+  /// that the results agree (to @p tol where narrowed, exactly otherwise).
+  template <typename Real, typename Ours, typename Library>
+  void compare(const std::string       &what,
+               const int                n,
+               const double             tol,
+               const Ours              &ours,
+               const Library           &library,
+               const std::vector<Real> &result,
+               const std::vector<Real> &reference)
+  {
+    const unsigned long before = formsolve::app::narrowed_blas_calls();
+    ours();
+    const bool narrowed = formsolve::app::narrowed_blas_calls() > before;
+    library();
+    test::close(what + ": narrowed exactly when n <= 2", narrowed, n <= 2, 0);
+    test::close(what + ": the library's result",
+                max_relative_difference(result, reference),
+                0,
+                n <= 2 ? tol : 0.);
+  }
+
   template <typename Real>
   void check_gemm(Gemm<Real> ours, Gemm<Real> library, const double tol)
   {
@@ -91,23 +114,15 @@ namespace
                   into,
                   &ldc);
               };
-              const unsigned long before =
-                formsolve::app::narrowed_blas_calls();
-              call(ours, c.data());
-              const bool narrowed =
-                formsolve::app::narrowed_blas_calls() > before;
-              call(library, reference.data());
-              const std::string what = kind + " " + ta + tb +
-                                       " n=" + std::to_string(n) +
-                                       " beta=" + std::to_string(beta);
-              test::close(what + ": narrowed exactly when n <= 2",
-                          narrowed,
-                          n <= 2,
-                          0);
-              test::close(what + ": the library's result",
-                          max_relative_difference(c, reference),
-                          0,
-                          n <= 2 ? tol : 0.);
+              compare(
+                kind + " " + ta + tb + " n=" + std::to_string(n) +
+                  " beta=" + std::to_string(beta),
+                n,
+                tol,
+                [&]() { call(ours, c.data()); },
+                [&]() { call(library, reference.data()); },
+                c,
+                reference);
             }
   }
 
@@ -140,23 +155,15 @@ namespace
                     into,
                     &ldb);
                 };
-                const unsigned long before =
-                  formsolve::app::narrowed_blas_calls();
-                call(ours, b.data());
-                const bool narrowed =
-                  formsolve::app::narrowed_blas_calls() > before;
-                call(library, reference.data());
-                const std::string what = kind + " " + uplo + trans + diag +
-                                         " n=" + std::to_string(n) +
-                                         " alpha=" + std::to_string(alpha);
-                test::close(what + ": narrowed exactly when n <= 2",
-                            narrowed,
-                            n <= 2,
-                            0);
-                test::close(what + ": the library's result",
-                            max_relative_difference(b, reference),
-                            0,
-                            n <= 2 ? tol : 0.);
+                compare(
+                  kind + " " + uplo + trans + diag + " n=" + std::to_string(n) +
+                    " alpha=" + std::to_string(alpha),
+                  n,
+                  tol,
+                  [&]() { call(ours, b.data()); },
+                  [&]() { call(library, reference.data()); },
+                  b,
+                  reference);
               }
     // Side R is never narrowed.
     const int           n = 1, one = 1;
