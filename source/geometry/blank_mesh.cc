@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 namespace formsolve
 {
@@ -118,6 +119,61 @@ namespace formsolve
       /// Manifold id of the rim of a round blank (the cylinder r = R).
       constexpr types::manifold_id rim_manifold = 1;
 
+      /// The rim of a round blank: the cylinder r = R for the refinements
+      /// that make the initial mesh, flat beyond. Adaptive refinement must
+      /// keep the geometry (the displacement is prolongated exactly only if
+      /// a new reference vertex is the midpoint of the old ones; on the
+      /// circle it would bulge the drawn rim out and add volume). A new
+      /// point goes on the circle only where the points it comes from lie at
+      /// least @p min_chord apart in the plane, as the rim edges of the
+      /// initial mesh and coarser ones do: every rank decides alike, and a
+      /// cell re-created after repartitioning or a restart is the same.
+      class RimManifold : public CylindricalManifold<3>
+      {
+      public:
+        explicit RimManifold(const double min_chord)
+            : CylindricalManifold<3>(2)
+            , min_chord(min_chord)
+        {}
+
+        std::unique_ptr<Manifold<3>> clone() const override
+        {
+          return std::make_unique<RimManifold>(min_chord);
+        }
+
+        Point<3>
+        get_new_point(const ArrayView<const Point<3>> &points,
+                      const ArrayView<const double>   &weights) const override
+        {
+          double chord = 0;
+          for (const auto &a : points)
+            for (const auto &b : points)
+              chord = std::max(chord, std::hypot(a[0] - b[0], a[1] - b[1]));
+          if (chord >= min_chord)
+            return CylindricalManifold<3>::get_new_point(points, weights);
+          Point<3> p;
+          for (unsigned int i = 0; i < points.size(); ++i)
+            p += weights[i] * points[i];
+          return p;
+        }
+
+        void get_new_points(const ArrayView<const Point<3>> &points,
+                            const Table<2, double>          &weights,
+                            ArrayView<Point<3>> new_points) const override
+        {
+          std::vector<double> w(weights.size(1));
+          for (unsigned int row = 0; row < weights.size(0); ++row)
+            {
+              for (unsigned int i = 0; i < w.size(); ++i)
+                w[i] = weights(row, i);
+              new_points[row] = get_new_point(points, make_array_view(w));
+            }
+        }
+
+      private:
+        double min_chord;
+      };
+
       void create_coarse(const parameters::Geometry              &g,
                          const parameters::Mesh                  &m,
                          parallel::distributed::Triangulation<3> &tria)
@@ -163,8 +219,29 @@ namespace formsolve
         // the planform's own refinement did, so the initial mesh is the same
         // as the refined planform extruded. It stays attached: every rank
         // must place the vertices of a cell it re-creates identically.
+        // The edges split to make the initial mesh (levels below k) are at
+        // least the coarse chord c / 2^(k-1) long, those of the initial
+        // mesh at most 1.11 c / 2^k (a quarter circle or less per coarse
+        // edge).
         if (rim)
-          tria.set_manifold(rim_manifold, CylindricalManifold<3>(2));
+          {
+            double chord = std::numeric_limits<double>::max();
+            for (const auto &cell : serial.active_cell_iterators())
+              for (const auto &face : cell->face_iterators())
+                if (face->manifold_id() == rim_manifold)
+                  for (unsigned int l = 0; l < face->n_lines(); ++l)
+                    {
+                      const auto   a = face->line(l)->vertex(0);
+                      const auto   b = face->line(l)->vertex(1);
+                      const double c = std::hypot(a[0] - b[0], a[1] - b[1]);
+                      if (c > 0)
+                        chord = std::min(chord, c);
+                    }
+            tria.set_manifold(rim_manifold,
+                              RimManifold(k == 0
+                                            ? std::numeric_limits<double>::max()
+                                            : 1.5 * chord / (1u << k)));
+          }
       }
 
       void create_coarse(const parameters::Geometry              &g,

@@ -49,6 +49,15 @@ namespace formsolve
         "farther than this times 'Band width' from it (-): hysteresis, so "
         "cells do not flip between levels.");
       prm.declare_entry(
+        "Coarsening shape tolerance",
+        "1e-3",
+        Double(0),
+        "A family of cells is coarsened only if the coarse cell keeps the "
+        "sheet's current shape: every vertex of the family within this "
+        "distance (mm) of the coarse cell's (multilinear) surface. A "
+        "coarsening that moves the sheet changes its volume and its contact "
+        "with the tools, and the punch force jumps in the next step.");
+      prm.declare_entry(
         "Indicator",
         "none",
         Selection("none|kelly"),
@@ -81,12 +90,13 @@ namespace formsolve
     void MeshRefinement::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Mesh refinement");
-      interval       = prm.get_integer("Interval");
-      punch_level    = prm.get_integer("Punch level");
-      die_level      = prm.get_integer("Die level");
-      holder_level   = prm.get_integer("Blank holder level");
-      band_width     = prm.get_double("Band width");
-      coarsen_factor = prm.get_double("Coarsening factor");
+      interval        = prm.get_integer("Interval");
+      punch_level     = prm.get_integer("Punch level");
+      die_level       = prm.get_integer("Die level");
+      holder_level    = prm.get_integer("Blank holder level");
+      band_width      = prm.get_double("Band width");
+      coarsen_factor  = prm.get_double("Coarsening factor");
+      shape_tolerance = prm.get_double("Coarsening shape tolerance");
       indicator =
         prm.get("Indicator") == "kelly" ? Indicator::kelly : Indicator::none;
       indicator_level  = prm.get_integer("Indicator level");

@@ -72,10 +72,14 @@ namespace formsolve
       for (const auto &f : fields)
         in.push_back(&f);
       transfer.prepare_for_coarsening_and_refinement(in);
-      // History: L2 projection onto discontinuous Q_p per cell, which keeps
-      // cell integrals when cells are split or merged.
-      HistoryTransfer<dim> history_transfer(state.prm.mesh.degree,
-                                            assembler.quadrature());
+      assembler.exchange_volume_offsets(state.dof_handler,
+                                        *state.mapping,
+                                        state.history);
+      // History: copied from the nearest old point, which makes no new
+      // extreme, with the integral over each family kept.
+      HistoryTransfer<dim> history_transfer(assembler.quadrature(),
+                                            state.reference_mapping,
+                                            state.kinematics);
       history_transfer.prepare(tria, state.history);
       state.mapping.reset();
       tria.execute_coarsening_and_refinement();
@@ -89,6 +93,9 @@ namespace formsolve
       transfer.interpolate(out);
       history_transfer.interpolate(state.history);
       state.set_transferable_fields(transferred);
+      assembler.exchange_volume_offsets(state.dof_handler,
+                                        *state.mapping,
+                                        state.history);
       state.update_contact_areas();
 
       report.changed      = true;

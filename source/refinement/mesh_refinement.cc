@@ -7,6 +7,8 @@
 #include <formsolve/refinement/mesh_refinement.h>
 
 #include <algorithm>
+#include <array>
+#include <set>
 
 namespace formsolve
 {
@@ -126,10 +128,64 @@ namespace formsolve
               ++flags.coarsen;
             }
         }
+      flags.coarsen -= keep_shape(dof_handler, mapping);
       const MPI_Comm comm = tria.get_communicator();
       flags.refine        = Utilities::MPI::sum(flags.refine, comm);
       flags.coarsen       = Utilities::MPI::sum(flags.coarsen, comm);
       return flags;
+    }
+
+    template <int dim>
+    unsigned int
+    RefinementCriteria<dim>::keep_shape(const DoFHandler<dim> &dof_handler,
+                                        const Mapping<dim>    &mapping) const
+    {
+      using Family = typename DoFHandler<dim>::cell_iterator;
+      std::set<Family> families;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && cell->coarsen_flag_set())
+          families.insert(cell->parent());
+      unsigned int cleared = 0;
+      for (const auto &parent : families)
+        {
+          const unsigned int n     = parent->n_children();
+          bool               whole = true;
+          for (unsigned int k = 0; k < n; ++k)
+            whole &= parent->child(k)->is_active() &&
+                     parent->child(k)->is_locally_owned() &&
+                     parent->child(k)->coarsen_flag_set();
+          if (!whole) // p4est keeps it anyway
+            continue;
+          // Child k holds the parent's vertex k as its own vertex k.
+          std::array<Point<dim>, GeometryInfo<dim>::vertices_per_cell> corner;
+          for (unsigned int k = 0; k < n; ++k)
+            corner[k] = mapping.transform_unit_to_real_cell(
+              parent->child(k),
+              GeometryInfo<dim>::unit_cell_vertex(k));
+          double deviation = 0;
+          for (unsigned int k = 0; k < n; ++k)
+            for (const unsigned int j : GeometryInfo<dim>::vertex_indices())
+              {
+                const Point<dim> xi =
+                  0.5 * (GeometryInfo<dim>::unit_cell_vertex(k) +
+                         GeometryInfo<dim>::unit_cell_vertex(j));
+                Point<dim> coarse;
+                for (unsigned int i = 0; i < n; ++i)
+                  coarse += GeometryInfo<dim>::d_linear_shape_function(xi, i) *
+                            corner[i];
+                const Point<dim> x = mapping.transform_unit_to_real_cell(
+                  parent->child(k),
+                  GeometryInfo<dim>::unit_cell_vertex(j));
+                deviation = std::max(deviation, x.distance(coarse));
+              }
+          if (deviation > prm.shape_tolerance)
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                parent->child(k)->clear_coarsen_flag();
+                ++cleared;
+              }
+        }
+      return cleared;
     }
 
 #define INSTANTIATE(dim) template class RefinementCriteria<dim>;

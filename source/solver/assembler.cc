@@ -29,6 +29,7 @@ namespace formsolve
       void volumetric_rates(const CellKinematics<dim>          &k,
                             const VectorType                   &v,
                             const double                        dt,
+                            const double                        offset,
                             std::vector<SymmetricTensor<2, 3>> &D,
                             std::vector<double>                &rates)
       {
@@ -38,8 +39,18 @@ namespace formsolve
           {
             rates[q] = trace(D[q]);
             if (dt > 0)
-              rates[q] += std::log(k.dV(q) / k.dV_reference(q)) / dt;
+              rates[q] += (std::log(k.dV(q) / k.dV_reference(q)) - offset) / dt;
           }
+      }
+
+      /// Mean of ln(dV/dV0) over the points of @p k (reinitialised).
+      template <int dim>
+      double log_volume_ratio(const CellKinematics<dim> &k)
+      {
+        double sum = 0;
+        for (unsigned int q = 0; q < k.n_points(); ++q)
+          sum += std::log(k.dV(q) / k.dV_reference(q));
+        return sum / k.n_points();
       }
     } // namespace
 
@@ -143,7 +154,7 @@ namespace formsolve
               }
             // Incompressibility by penalty, reduced integration against
             // locking.
-            volumetric_rates(kr, v, dt, Dr, div_v);
+            volumetric_rates(kr, v, dt, h[0]->volume_offset, Dr, div_v);
             for (unsigned int q = 0; q < kr.n_points(); ++q)
               {
                 const double dV = kr.dV(q);
@@ -219,7 +230,8 @@ namespace formsolve
             kf.reinit(cell);
             kr.reinit(cell);
             kf.rates(v, D);
-            volumetric_rates(kr, v, dt, Dr, div_v);
+            auto h = history.get_data(cell);
+            volumetric_rates(kr, v, dt, h[0]->volume_offset, Dr, div_v);
             double mean_div = 0, volume = 0;
             for (unsigned int q = 0; q < kr.n_points(); ++q)
               {
@@ -228,7 +240,6 @@ namespace formsolve
               }
             const double mean_stress = Kv * mean_div / volume;
 
-            auto h = history.get_data(cell);
             for (unsigned int q = 0; q < kf.n_points(); ++q)
               {
                 const auto r = material.evaluate(D[q], h[q]->strain, dt, false);
@@ -372,6 +383,33 @@ namespace formsolve
       return Utilities::MPI::sum(
         power,
         dof_handler.get_triangulation().get_communicator());
+    }
+
+    template <int dim>
+    void
+    Assembler<dim>::exchange_volume_offsets(const DoFHandler<dim> &dof_handler,
+                                            const Mapping<dim>    &mapping,
+                                            HistoryStorage<dim> &history) const
+    {
+      CellKinematics<dim> kr(kinematics,
+                             mapping,
+                             dof_handler.get_fe(),
+                             reduced,
+                             update_default,
+                             &reference_mapping);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            kr.reinit(cell);
+            const double ratio = log_volume_ratio(kr);
+            auto         h     = history.get_data(cell);
+            // The transfer may leave a coarsened cell's values unequal.
+            double stored = 0;
+            for (const auto &p : h)
+              stored += p->volume_offset / h.size();
+            for (auto &p : h)
+              p->volume_offset = ratio - stored;
+          }
     }
 
 #define INSTANTIATE(dim) template class Assembler<dim>;

@@ -18,12 +18,13 @@ namespace formsolve
 
     struct MeshRefinement
     {
-      unsigned int interval        = 0;   // steps between adaptations, 0: off
-      unsigned int punch_level     = 0;   // max level near the punch radius
-      unsigned int die_level       = 0;   // ... die profile radius
-      unsigned int holder_level    = 0;   // ... blank-holder profile radius
-      double       band_width      = 3;   // mm from the radius arc
-      double       coarsen_factor  = 1.5; // coarsen beyond this * band width
+      unsigned int interval        = 0;    // steps between adaptations, 0: off
+      unsigned int punch_level     = 0;    // max level near the punch radius
+      unsigned int die_level       = 0;    // ... die profile radius
+      unsigned int holder_level    = 0;    // ... blank-holder profile radius
+      double       band_width      = 3;    // mm from the radius arc
+      double       coarsen_factor  = 1.5;  // coarsen beyond this * band width
+      double       shape_tolerance = 1e-3; // mm a coarsening may move a node
       Indicator    indicator       = Indicator::none;
       unsigned int indicator_level = 1; // max level the indicator refines to
       double       refine_fraction = 0.1, coarsen_fraction = 0.3;

@@ -50,6 +50,12 @@ namespace formsolve
                               const double               band_factor) const;
 
     private:
+      /// Clears the coarsening flags of every family whose coarse cell would
+      /// move one of the family's vertices (current configuration) by more
+      /// than the shape tolerance. Returns how many flags it cleared.
+      unsigned int keep_shape(const dealii::DoFHandler<dim> &dof_handler,
+                              const dealii::Mapping<dim>    &mapping) const;
+
       parameters::MeshRefinement prm;
       unsigned int               initial_level;
       std::vector<unsigned int>  tool_level; // per tool of the ToolSet

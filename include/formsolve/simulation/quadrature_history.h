@@ -22,8 +22,13 @@ namespace formsolve
       double oyane = 0; // Oyane's damage integral I (-)
       double cockcroft_latham =
         0; // int max(sigma_1, 0) d eps_bar (MPa), not yet / C_crit
+      // Cell constant: the part of ln(dV/dV0) that the volume correction
+      // leaves alone (doc/theory.md, eq. 5a); 0 until an adaptation, which
+      // sets it so that a new cell starts with the volume error of the cells
+      // it came from.
+      double volume_offset = 0;
 
-      unsigned int number_of_values() const override { return 7; }
+      unsigned int number_of_values() const override { return 8; }
       void         pack_values(std::vector<double> &v) const override
       {
         v = {strain,
@@ -32,7 +37,8 @@ namespace formsolve
              mean_stress,
              thickness_strain,
              oyane,
-             cockcroft_latham};
+             cockcroft_latham,
+             volume_offset};
       }
       void unpack_values(const std::vector<double> &v) override
       {
@@ -43,6 +49,7 @@ namespace formsolve
         thickness_strain = v[4];
         oyane            = v[5];
         cockcroft_latham = v[6];
+        volume_offset    = v[7];
       }
     };
 

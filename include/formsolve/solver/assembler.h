@@ -84,6 +84,16 @@ namespace formsolve
                           HistoryStorage<dim>           &history) const;
 
       /// Create history entries on the locally owned cells.
+      /// Swaps each cell's volume offset c and its volume error
+      /// e = ln(dV/dV0) - c (cell means at the reduced points): before an
+      /// adaptation the history carries e to the new cells, after it each
+      /// new cell takes c = ln(dV/dV0) - e, so that the volume correction
+      /// goes on from the error of the cells it came from (doc/theory.md,
+      /// eq. 5a). Cells left alone get their c back.
+      void exchange_volume_offsets(const dealii::DoFHandler<dim> &dof_handler,
+                                   const dealii::Mapping<dim>    &mapping,
+                                   HistoryStorage<dim> &history) const;
+
       void initialize_history(const dealii::DoFHandler<dim> &dof_handler,
                               HistoryStorage<dim>           &history) const;
 
