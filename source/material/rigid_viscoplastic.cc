@@ -81,5 +81,18 @@ namespace formsolve
       out.beta_plastic = newton ? -(4. / 9.) * s / (rate * rate * rate) : 0.;
       return out;
     }
+
+    SymmetricTensor<4, 3>
+    RigidViscoplastic::tangent(const PointResponse         &m,
+                               const SymmetricTensor<2, 3> &w_rate) const
+    {
+      const SymmetricTensor<2, 3> &e = m.strain_rate_deviator;
+      SymmetricTensor<4, 3>        C = 2. * m.viscosity * deviator_tensor<3>() +
+                                (m.beta - m.beta_plastic) * outer_product(e, e);
+      if (m.beta_plastic != 0)
+        C += 0.5 * m.beta_plastic *
+             (outer_product(e, w_rate) + outer_product(w_rate, e));
+      return C;
+    }
   } // namespace material
 } // namespace formsolve

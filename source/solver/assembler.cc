@@ -66,6 +66,7 @@ namespace formsolve
         , damage(damage)
         , full(degree + 1)
         , reduced(degree)
+        , product_form(material.isotropic())
     {}
 
     template <int dim>
@@ -149,8 +150,10 @@ namespace formsolve
                                beta_p * (dual ? B[i].contract(w_rate) : s[i]);
                       }
                   }
-                if (matrix)
+                if (matrix && product_form)
                   tangent.add_deviatoric(q, B, mu, s, u);
+                else if (matrix)
+                  tangent.add_general(q, B, material.tangent(m, w_rate) * dV);
               }
             // Incompressibility by penalty, reduced integration against
             // locking.

@@ -1,3 +1,4 @@
+#include <formsolve/material/mandel.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/solver/cell_tangent.h>
 
@@ -34,6 +35,8 @@ namespace formsolve
       P.reinit(n_scalar * n_psi, n_scalar * n_psi);
       E.reinit(n, n);
       V.reinit(n, n);
+      G.reinit(6 * n_points, n);
+      CG.reinit(6 * n_points, n);
     }
 
     template <int dim>
@@ -46,6 +49,7 @@ namespace formsolve
     {
       // The components of one node share the scalar gradient: take it (and
       // phi/r, carried by the radial component) from component 0.
+      product_form = true;
       for (unsigned int i = 0; i < B.size(); ++i)
         {
           if (component[i] == 0)
@@ -67,6 +71,40 @@ namespace formsolve
     }
 
     template <int dim>
+    void CellTangent<dim>::add_general(const unsigned int                     q,
+                                       const std::vector<model::ShapeStrain> &B,
+                                       const SymmetricTensor<4, 3>           &C)
+    {
+      general_form       = true;
+      const auto   C6    = material::to_mandel(C);
+      const double root2 = std::sqrt(2.);
+      for (unsigned int i = 0; i < B.size(); ++i)
+        {
+          // B_i = sym(e_c (x) g) + hoop e_2 (x) e_2 in Mandel's entries.
+          const unsigned int c = B[i].component;
+          material::Mandel6  b{};
+          for (unsigned int r = 0; r < 6; ++r)
+            {
+              const unsigned int k = material::mandel_index[r][0],
+                                 l = material::mandel_index[r][1];
+              if (k == l)
+                b[r] = k == c ? B[i].gradient[c] : 0.;
+              else if (k == c || l == c)
+                b[r] = root2 * 0.5 * B[i].gradient[k == c ? l : k];
+            }
+          b[2] += B[i].hoop;
+          for (unsigned int r = 0; r < 6; ++r)
+            {
+              double cb = 0;
+              for (unsigned int s = 0; s < 6; ++s)
+                cb += C6[r][s] * b[s];
+              G(6 * q + r, i)  = b[r];
+              CG(6 * q + r, i) = cb;
+            }
+        }
+    }
+
+    template <int dim>
     void CellTangent<dim>::add_volumetric(const unsigned int         q,
                                           const std::vector<double> &tr,
                                           const double               weight)
@@ -81,9 +119,24 @@ namespace formsolve
     template <int dim>
     void CellTangent<dim>::finish(FullMatrix<double> &K)
     {
+      T.Tmmult(V, T_w);
+      if (general_form)
+        {
+          // G^T (C G) plus the volumetric term: the product form's parts
+          // are zero.
+          Assert(!product_form, ExcInternalError());
+          G.Tmmult(K, CG);
+          K.add(1., V);
+          G            = 0;
+          CG           = 0;
+          T            = 0;
+          T_w          = 0;
+          general_form = false;
+          return;
+        }
+      product_form = false;
       psi.Tmmult(P, psi_w);
       S.Tmmult(E, U);
-      T.Tmmult(V, T_w);
       const unsigned int n = component.size();
       const unsigned int h = dim; // the phi/r column
       for (unsigned int i = 0; i < n; ++i)

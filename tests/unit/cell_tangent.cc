@@ -2,7 +2,9 @@
 // the contraction it replaces, B_i : C : B_j per DoF pair and point, with
 // ShapeStrain's own contraction, on a distorted cell: 2-D axisymmetric
 // (hoop terms), plane 2-D and 3-D, Q1 and Q2, with arbitrary per-point
-// viscosities and rate vectors. Equal to round-off, symmetric.
+// viscosities and rate vectors. Equal to round-off, symmetric. The general
+// form (a 6x6 tangent with no structure) against B_i : C : B_j summed
+// directly.
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
@@ -25,6 +27,77 @@ using namespace formsolve;
 
 namespace
 {
+  /// B_i as a symmetric 3x3 tensor.
+  SymmetricTensor<2, 3> tensor(const model::ShapeStrain &b)
+  {
+    SymmetricTensor<2, 3> t;
+    for (unsigned int k = 0; k < 3; ++k)
+      t[b.component][k] += (k == b.component ? 1. : 0.5) * b.gradient[k];
+    t[2][2] += b.hoop;
+    return t;
+  }
+
+  /// A fourth-order tensor with both symmetries and no structure.
+  SymmetricTensor<4, 3> general_tensor(const unsigned int q)
+  {
+    SymmetricTensor<4, 3> C;
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = i; j < 3; ++j)
+        for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int l = k; l < 3; ++l)
+            {
+              const unsigned int a = 3 * i + j, b = 3 * k + l;
+              C[i][j][k][l] = std::cos(0.3 * (a * b) + 0.7 * (a + b) + q) +
+                              (a == b ? 3. : 0.);
+            }
+    return C;
+  }
+
+  /// The general form (CellTangent::add_general) against B_i : C : B_j
+  /// summed directly, for a tangent with no structure, on the same cell.
+  template <int dim>
+  void check_general(const std::string                &name,
+                     solver::CellTangent<dim>         &tangent,
+                     const model::CellKinematics<dim> &kf,
+                     const model::CellKinematics<dim> &kr,
+                     const unsigned int                n)
+  {
+    FullMatrix<double>              expected(n, n), K(n, n);
+    std::vector<model::ShapeStrain> B;
+    std::vector<double>             tr(n);
+    for (unsigned int q = 0; q < kf.n_points(); ++q)
+      {
+        kf.shape_strains(q, B);
+        const SymmetricTensor<4, 3> C = general_tensor(q);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            expected(i, j) += tensor(B[i]) * C * tensor(B[j]);
+        tangent.add_general(q, B, C);
+      }
+    for (unsigned int q = 0; q < kr.n_points(); ++q)
+      {
+        kr.shape_strains(q, B);
+        for (unsigned int i = 0; i < n; ++i)
+          tr[i] = B[i].trace();
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            expected(i, j) += 20. * tr[i] * tr[j];
+        tangent.add_volumetric(q, tr, 20.);
+      }
+    tangent.finish(K);
+    double scale = 0, error = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          scale = std::max(scale, std::abs(expected(i, j)));
+          error = std::max(error, std::abs(K(i, j) - expected(i, j)));
+        }
+    test::close(name + ": general C, |K - B:C:B| / max|K|",
+                error / scale,
+                0,
+                1e-13);
+  }
+
   template <int dim>
   void check(const bool axisymmetric, const unsigned int degree)
   {
@@ -129,6 +202,7 @@ namespace
                 carried / vol_scale,
                 0,
                 1e-13);
+    check_general(name, tangent, kf, kr, n);
   }
 } // namespace
 

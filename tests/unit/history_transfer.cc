@@ -46,8 +46,8 @@ namespace
         return 0.01 * x[0] * x[1] + 0.05 * x[0] * z;
       if (dim == 2)
         return 0.03 * x[0] * x[1];
-      return c == 0 ? 0.004 * x[0] * x[1] + 0.03 * x[0] * z :
-                      0.004 * x[0] * x[1] + 0.03 * x[1] * z;
+      return c == 0 ? 0.004 * x[0] * x[1] + 0.03 * x[0] * z
+                    : 0.004 * x[0] * x[1] + 0.03 * x[1] * z;
     }
   };
 
@@ -93,7 +93,7 @@ namespace
   /// The volume error of every locally owned cell, with the cell.
   template <int dim>
   std::vector<std::pair<typename Triangulation<dim>::cell_iterator, double>>
-  volume_errors(simulation::State<dim>        &state,
+  volume_errors(simulation::State<dim>       &state,
                 const solver::Assembler<dim> &assembler)
   {
     // The exchange turns offsets into errors; a second one turns them back.
@@ -119,15 +119,16 @@ namespace
   };
 
   template <int dim>
-  Measures measure(const simulation::State<dim>  &state,
+  Measures measure(const simulation::State<dim> &state,
                    const solver::Assembler<dim> &assembler)
   {
     const auto &dofs = state.dof_handler;
     const auto &ref  = state.reference_mapping;
-    return {extremes(state, &History::oyane),
-            extremes(state, &History::strain),
-            assembler.history_integral(dofs, ref, state.history, &History::oyane),
-            assembler.history_integral(dofs, ref, state.history, &History::strain)};
+    return {
+      extremes(state, &History::oyane),
+      extremes(state, &History::strain),
+      assembler.history_integral(dofs, ref, state.history, &History::oyane),
+      assembler.history_integral(dofs, ref, state.history, &History::strain)};
   }
 
   template <int dim>
@@ -191,10 +192,12 @@ namespace
 
     if (Utilities::MPI::this_mpi_process(state.comm) != 0)
       return;
-    std::cout << name << ": damage in [" << after_values.oyane.min << ", " << after_values.oyane.max
-              << "] from [" << before_values.oyane.min << ", " << before_values.oyane.max
-              << "], strain in [" << after_values.strain.min << ", " << after_values.strain.max
-              << "] from [" << before_values.strain.min << ", " << before_values.strain.max << "]\n";
+    std::cout << name << ": damage in [" << after_values.oyane.min << ", "
+              << after_values.oyane.max << "] from [" << before_values.oyane.min
+              << ", " << before_values.oyane.max << "], strain in ["
+              << after_values.strain.min << ", " << after_values.strain.max
+              << "] from [" << before_values.strain.min << ", "
+              << before_values.strain.max << "]\n";
     test::close(name + ": no new damage maximum",
                 after_values.oyane.max <= before_values.oyane.max + 1e-12,
                 1,
@@ -215,8 +218,15 @@ namespace
                 after_values.strain.min >= before_values.strain.min - 1e-12,
                 1,
                 0);
-    test::close(name + ": int I dV0 kept (rel.)", after_values.oyane_integral / before_values.oyane_integral - 1, 0, 1e-10);
-    test::close(name + ": int eps dV0 kept (rel.)", after_values.strain_integral / before_values.strain_integral - 1, 0, 1e-10);
+    test::close(name + ": int I dV0 kept (rel.)",
+                after_values.oyane_integral / before_values.oyane_integral - 1,
+                0,
+                1e-10);
+    test::close(name + ": int eps dV0 kept (rel.)",
+                after_values.strain_integral / before_values.strain_integral -
+                  1,
+                0,
+                1e-10);
     test::close(name + ": volume kept (rel.)",
                 r.volume_after / r.volume_before - 1,
                 0,

@@ -47,6 +47,20 @@ namespace formsolve
                              const double                 dt,
                              const bool                   newton) const;
 
+      /// The derivative of the deviatoric stress with respect to the rate
+      /// of deformation at the point of @p m, in the general form any law
+      /// gives (doc/theory.md, eq. 4c): 2 mu P_dev + (beta - beta_plastic)
+      /// D' (x) D' + beta_plastic/2 (D' (x) W + W (x) D'), with @p w_rate the
+      /// dual direction times its rate (D' for Newton's own tangent).
+      SymmetricTensor<4, 3> tangent(const PointResponse         &m,
+                                    const SymmetricTensor<2, 3> &w_rate) const;
+
+      /// Whether tangent() is 2 mu P_dev plus terms in D' and W only: the
+      /// element then assembles it from products of the shape gradients
+      /// (solver::CellTangent::add_deviatoric), the same matrix in 0.55-0.65
+      /// of the time of the general 6x6 product (doc/theory.md, section 5a).
+      bool isotropic() const { return true; }
+
       /// K_v in sigma_m = K_v tr(D) (MPa s).
       double bulk_viscosity() const { return bulk; }
       /// The strain rate below which the law is linear (rigid zone), 1/s.

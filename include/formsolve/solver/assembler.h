@@ -71,6 +71,11 @@ namespace formsolve
                            DualStress             *dual    = nullptr,
                            const CellScatter<dim> *scatter = nullptr) const;
 
+      /// Assemble the deviatoric tangent through the material's general
+      /// 6x6 tangent even where it has the isotropic form (tests: both give
+      /// the same matrix).
+      void use_general_tangent() { product_form = false; }
+
       /// The strain rate below which the flow law is linear (1/s).
       double cutoff_rate() const { return material.cutoff_rate(); }
       bool   smooth_rigid_zone() const { return material.smooth_rigid_zone(); }
@@ -151,6 +156,7 @@ namespace formsolve
       const material::DamageCriteria    *damage;
       dealii::QGauss<dim>                full;    // deviatoric part
       dealii::QGauss<dim>                reduced; // volumetric part
+      bool product_form; // CellTangent::add_deviatoric, else add_general
     };
   } // namespace solver
 } // namespace formsolve

@@ -4,7 +4,9 @@
 // 2 mu B_i : B_j and the deviatoric trace term come from one matrix
 // P = sum_q mu_q psi_q (x) psi_q of the scalar shape gradients (and phi/r
 // in axisymmetry), the rate terms from S^T U, the volumetric penalty from
-// T^T T at the reduced points (doc/theory.md section 5a).
+// T^T T at the reduced points (doc/theory.md section 5a). A material without
+// that isotropic form gives its 6x6 tangent instead, and the deviatoric part
+// is the product G^T (C G) of the Mandel rows of B.
 #pragma once
 
 #include <deal.II/fe/fe.h>
@@ -39,6 +41,13 @@ namespace formsolve
                           const std::vector<double>             &s,
                           const std::vector<double>             &u);
 
+      /// Deviatoric part at point @p q of the full rule for any material:
+      /// B_i : C : B_j with @p C the material tangent already weighted by
+      /// the volume element (as 6x6 products in Mandel's notation).
+      void add_general(const unsigned int                     q,
+                       const std::vector<model::ShapeStrain> &B,
+                       const dealii::SymmetricTensor<4, 3>   &C);
+
       /// Volumetric penalty at point @p q of the reduced rule:
       /// weight tr_i tr_j.
       void add_volumetric(const unsigned int         q,
@@ -57,6 +66,9 @@ namespace formsolve
       dealii::FullMatrix<double> S, U;            // points x DoFs
       dealii::FullMatrix<double> T, T_w;          // reduced points x DoFs
       dealii::FullMatrix<double> P, E, V;         // the three products
+      // The general form: Mandel rows of B and of C B, 6 per point.
+      dealii::FullMatrix<double> G, CG;
+      bool                       product_form = false, general_form = false;
 
       unsigned int column(const unsigned int a, const unsigned int k) const
       {
