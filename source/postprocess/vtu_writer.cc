@@ -84,17 +84,11 @@ namespace formsolve
         // Cell averages of the quadrature-point history.
         const auto        &tria = dof_handler.get_triangulation();
         const unsigned int n    = tria.n_active_cells();
-        // The history values in the order of QuadraturePointHistory::
-        // pack_values, then the rank.
-        const std::vector<std::string> names = {"equivalent_strain",
-                                                "equivalent_strain_rate",
-                                                "flow_stress",
-                                                "mean_stress",
-                                                "thickness_strain",
-                                                "oyane",
-                                                "cockcroft_latham_integral",
-                                                "mpi_rank"};
-        const unsigned int             nh    = names.size() - 1;
+        // The history values, then the rank.
+        std::vector<std::string> names =
+          simulation::QuadraturePointHistory::value_names();
+        names.push_back("mpi_rank");
+        const unsigned int nh = names.size() - 1;
         cell_data.assign(names.size(), Vector<float>(n));
         std::vector<double> values;
         for (const auto &cell : tria.active_cell_iterators())

@@ -4,6 +4,7 @@
 #include <deal.II/base/quadrature_point_data.h>
 #include <deal.II/grid/tria.h>
 
+#include <string>
 #include <vector>
 
 namespace formsolve
@@ -27,6 +28,19 @@ namespace formsolve
       // sets it so that a new cell starts with the volume error of the cells
       // it came from.
       double volume_offset = 0;
+
+      /// The names of the values, in the order of pack_values() (output).
+      static std::vector<std::string> value_names()
+      {
+        return {"equivalent_strain",
+                "equivalent_strain_rate",
+                "flow_stress",
+                "mean_stress",
+                "thickness_strain",
+                "oyane",
+                "cockcroft_latham_integral",
+                "volume_offset"};
+      }
 
       unsigned int number_of_values() const override { return 8; }
       void         pack_values(std::vector<double> &v) const override
