@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <formsolve/contact/penalty_strategy.h>
+#include <formsolve/parameters/choices.h>
 
 #include <map>
 
@@ -28,7 +29,7 @@ namespace formsolve
                                    const StrategyFactory<3> &factory3)
     {
       registry()[name] = Entry{factory2, factory3};
-      return true;
+      return parameters::add_choice("Contact/Penalty strategy", name);
     }
 
     std::string penalty_strategy_names()

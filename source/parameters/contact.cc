@@ -1,4 +1,4 @@
-#include <formsolve/contact/penalty_strategy.h>
+#include <formsolve/parameters/choices.h>
 #include <formsolve/parameters/contact.h>
 #include <formsolve/parameters/require.h>
 
@@ -14,7 +14,7 @@ namespace formsolve
       prm.declare_entry(
         "Penalty strategy",
         "adaptive-strict",
-        Selection(contact::penalty_strategy_names()),
+        Selection(choices("Contact/Penalty strategy")),
         "How penalty factors are chosen. fixed: 'Penalty factor' (or the "
         "tool's own) times the nodal contact area. adaptive: per contact "
         "pair and Newton iteration from the current system, so that the "
@@ -168,11 +168,6 @@ namespace formsolve
 
     void Contact::validate() const
     {
-      require(penalty_strategy != "augmented-lagrangian" ||
-                max_strict_passes > 0,
-              "Contact/Max strict passes",
-              "must be at least 1 for augmented-lagrangian (its Uzawa "
-              "updates are the passes)");
       require_positive(penalty_factor, "Contact/Penalty factor", "N/mm^3");
       require_positive(allowed_penetration,
                        "Contact/Allowed penetration",

@@ -8,9 +8,9 @@ namespace formsolve
     using namespace dealii;
 
     template <int dim>
-    void ContactFields<dim>::fill(const simulation::State<dim> &state,
-                                  const std::vector<double>    &epsilon,
-                                  const double                  search_distance)
+    void ContactFields<dim>::fill(const state::State<dim>   &state,
+                                  const std::vector<double> &epsilon,
+                                  const double               search_distance)
     {
       // Accumulate per node first: mixing set and add on a Trilinos vector
       // triggers a collective exchange that ranks would reach unevenly.

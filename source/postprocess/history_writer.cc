@@ -2,6 +2,7 @@
 
 #include <formsolve/model/dimensions.h>
 #include <formsolve/postprocess/history_writer.h>
+#include <formsolve/state/sheet_integrals.h>
 
 namespace formsolve
 {
@@ -87,8 +88,8 @@ namespace formsolve
     } // namespace
 
     template <int dim>
-    HistoryWriter<dim>::HistoryWriter(const simulation::State<dim> &state,
-                                      const int                     keep_rows)
+    HistoryWriter<dim>::HistoryWriter(const state::State<dim> &state,
+                                      const int                keep_rows)
         : table(state.prm.output.directory + "/history.csv",
                 columns(state.tools),
                 Utilities::MPI::this_mpi_process(state.comm) == 0,
@@ -96,12 +97,11 @@ namespace formsolve
     {}
 
     template <int dim>
-    void HistoryWriter<dim>::write(const simulation::State<dim> &state,
-                                   const solver::StepReport     &report,
+    void HistoryWriter<dim>::write(const state::State<dim>  &state,
+                                   const solver::StepReport &report,
                                    const contact::ContactStatistics<dim> &stats,
-                                   const solver::Assembler<dim> &assembler,
-                                   const FormingMeasures<dim>   &forming,
-                                   const double                  wall_time)
+                                   const FormingMeasures<dim> &forming,
+                                   const double                wall_time)
     {
       const auto        &tools = state.tools;
       const double       sym   = state.prm.geometry.symmetry_factor();
@@ -140,15 +140,9 @@ namespace formsolve
       table.set("max_linear_iterations", report.max_linear_iterations);
       table.set("condition_estimate", report.condition_estimate);
       table.set("dofs", state.dof_handler.n_dofs());
-      table.set("volume",
-                sym * assembler.volume(state.dof_handler, *state.mapping));
+      table.set("volume", sym * volume(state));
       table.set("max_equivalent_strain",
-                assembler
-                  .history_maximum(state.dof_handler,
-                                   *state.mapping,
-                                   state.history,
-                                   &simulation::QuadraturePointHistory::strain)
-                  .value);
+                maximum(state, &state::QuadraturePointHistory::strain).value);
       const auto &sheet = forming.sheet;
       const auto  where = coordinates<dim>();
       table.set("min_thickness", sheet.min_thickness);

@@ -35,7 +35,7 @@ namespace formsolve
     }
 
     template <int dim>
-    void SheetMeasures<dim>::measure(const simulation::State<dim>   &state,
+    void SheetMeasures<dim>::measure(const state::State<dim>        &state,
                                      const material::DamageCriteria &damage)
     {
       const Records local  = local_records(state, damage);
@@ -80,7 +80,7 @@ namespace formsolve
 
     template <int dim>
     typename SheetMeasures<dim>::Records SheetMeasures<dim>::local_records(
-      const simulation::State<dim>   &state,
+      const state::State<dim>        &state,
       const material::DamageCriteria &damage) const
     {
       constexpr unsigned int nc  = n_corners;
@@ -181,7 +181,7 @@ namespace formsolve
 
     template <int dim>
     std::vector<NodalScalar>
-    SheetMeasures<dim>::nodal_fields(const simulation::State<dim> &state)
+    SheetMeasures<dim>::nodal_fields(const state::State<dim> &state)
     {
       // Columns from rank 0: key, thickness, thinning, major, minor, zone.
       constexpr unsigned int nk = dim - 1, stride = nk + 5;

@@ -86,7 +86,7 @@ namespace formsolve
         const unsigned int n    = tria.n_active_cells();
         // The history values, then the rank.
         std::vector<std::string> names =
-          simulation::QuadraturePointHistory::value_names();
+          state::QuadraturePointHistory::value_names();
         names.push_back("mpi_rank");
         const unsigned int nh = names.size() - 1;
         cell_data.assign(names.size(), Vector<float>(n));

@@ -4,19 +4,21 @@
 #include <formsolve/model/dimensions.h>
 #include <formsolve/refinement/adapt.h>
 #include <formsolve/refinement/history_transfer.h>
+#include <formsolve/state/sheet_integrals.h>
 
 namespace formsolve
 {
   namespace refinement
   {
     using namespace dealii;
-    using simulation::VectorType;
+    using History = state::QuadraturePointHistory;
+    using state::VectorType;
 
     template <int dim>
-    AdaptReport adapt_mesh(simulation::State<dim>        &state,
-                           const RefinementCriteria<dim> &criteria,
-                           const solver::Assembler<dim>  &assembler,
-                           const std::function<void()>   &before_change)
+    AdaptReport adapt_mesh(state::State<dim>               &state,
+                           const RefinementCriteria<dim>   &criteria,
+                           const state::HistoryUpdate<dim> &update,
+                           const std::function<void()>     &before_change)
     {
       state.velocity_ghost = state.velocity;
       const auto flags     = criteria.mark(state.dof_handler,
@@ -25,16 +27,16 @@ namespace formsolve
                                        state.tools);
       if (flags.refine + flags.coarsen == 0)
         return AdaptReport();
-      AdaptReport report = adapt_flagged(state, assembler, before_change);
+      AdaptReport report = adapt_flagged(state, update, before_change);
       report.refine      = flags.refine;
       report.coarsen     = flags.coarsen;
       return report;
     }
 
     template <int dim>
-    AdaptReport adapt_flagged(simulation::State<dim>       &state,
-                              const solver::Assembler<dim> &assembler,
-                              const std::function<void()>  &before_change)
+    AdaptReport adapt_flagged(state::State<dim>               &state,
+                              const state::HistoryUpdate<dim> &update,
+                              const std::function<void()>     &before_change)
     {
       AdaptReport report;
       auto       &tria = state.tria;
@@ -51,17 +53,10 @@ namespace formsolve
       if (before_change)
         before_change();
 
-      report.volume_before =
-        assembler.volume(state.dof_handler, *state.mapping);
-      report.strain_before = assembler.strain_integral(state.dof_handler,
-                                                       *state.mapping,
-                                                       state.history);
-      report.damage_before =
-        assembler.history_integral(state.dof_handler,
-                                   *state.mapping,
-                                   state.history,
-                                   &simulation::QuadraturePointHistory::oyane);
-      report.cells_before = tria.n_global_active_cells();
+      report.volume_before = volume(state);
+      report.strain_before = integral(state, &History::strain);
+      report.damage_before = integral(state, &History::oyane);
+      report.cells_before  = tria.n_global_active_cells();
 
       // Velocity, displacement and the contact state, as nodal fields:
       // nodes that persist keep their values, new nodes interpolate them.
@@ -72,19 +67,19 @@ namespace formsolve
       for (const auto &f : fields)
         in.push_back(&f);
       transfer.prepare_for_coarsening_and_refinement(in);
-      assembler.exchange_volume_offsets(state.dof_handler,
-                                        *state.mapping,
-                                        state.history);
+      update.exchange_volume_offsets(state.dof_handler,
+                                     *state.mapping,
+                                     state.history);
       // History: copied from the nearest old point, which makes no new
       // extreme, with the integral over each family kept.
-      HistoryTransfer<dim> history_transfer(assembler.quadrature(),
+      HistoryTransfer<dim> history_transfer(state.history_rule,
                                             state.reference_mapping,
                                             state.kinematics);
       history_transfer.prepare(tria, state.history);
       state.mapping.reset();
       tria.execute_coarsening_and_refinement();
 
-      state.setup_dofs(assembler);
+      state.setup_dofs();
       std::vector<VectorType>   transferred(fields.size(),
                                           VectorType(state.owned, state.comm));
       std::vector<VectorType *> out;
@@ -93,33 +88,27 @@ namespace formsolve
       transfer.interpolate(out);
       history_transfer.interpolate(state.history);
       state.set_transferable_fields(transferred);
-      assembler.exchange_volume_offsets(state.dof_handler,
-                                        *state.mapping,
-                                        state.history);
+      update.exchange_volume_offsets(state.dof_handler,
+                                     *state.mapping,
+                                     state.history);
       state.update_contact_areas();
 
       report.changed      = true;
       report.cells_after  = tria.n_global_active_cells();
       report.dofs         = state.dof_handler.n_dofs();
-      report.volume_after = assembler.volume(state.dof_handler, *state.mapping);
-      report.strain_after = assembler.strain_integral(state.dof_handler,
-                                                      *state.mapping,
-                                                      state.history);
-      report.damage_after =
-        assembler.history_integral(state.dof_handler,
-                                   *state.mapping,
-                                   state.history,
-                                   &simulation::QuadraturePointHistory::oyane);
+      report.volume_after = volume(state);
+      report.strain_after = integral(state, &History::strain);
+      report.damage_after = integral(state, &History::oyane);
       return report;
     }
 
-#define INSTANTIATE(dim)                                             \
-  template AdaptReport adapt_mesh(simulation::State<dim> &,          \
-                                  const RefinementCriteria<dim> &,   \
-                                  const solver::Assembler<dim> &,    \
-                                  const std::function<void()> &);    \
-  template AdaptReport adapt_flagged(simulation::State<dim> &,       \
-                                     const solver::Assembler<dim> &, \
+#define INSTANTIATE(dim)                                                \
+  template AdaptReport adapt_mesh(state::State<dim> &,                  \
+                                  const RefinementCriteria<dim> &,      \
+                                  const state::HistoryUpdate<dim> &,    \
+                                  const std::function<void()> &);       \
+  template AdaptReport adapt_flagged(state::State<dim> &,               \
+                                     const state::HistoryUpdate<dim> &, \
                                      const std::function<void()> &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE

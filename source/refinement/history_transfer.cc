@@ -44,7 +44,7 @@ namespace formsolve
                   nearest[k][q] = p;
                 }
           }
-      n_values = simulation::QuadraturePointHistory().number_of_values();
+      n_values = state::QuadraturePointHistory().number_of_values();
     }
 
     template <int dim>
@@ -178,7 +178,7 @@ namespace formsolve
     template <int dim>
     void HistoryTransfer<dim>::prepare(
       parallel::distributed::Triangulation<dim> &triangulation,
-      simulation::HistoryStorage<dim>           &history)
+      state::HistoryStorage<dim>                &history)
     {
       tria                   = &triangulation;
       const unsigned int n_q = quadrature.size();
@@ -213,8 +213,7 @@ namespace formsolve
     }
 
     template <int dim>
-    void
-    HistoryTransfer<dim>::interpolate(simulation::HistoryStorage<dim> &history)
+    void HistoryTransfer<dim>::interpolate(state::HistoryStorage<dim> &history)
     {
       Assert(transfer, ExcInternalError());
       CellValues new_values(tria->n_active_cells());

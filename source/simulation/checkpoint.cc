@@ -173,9 +173,7 @@ namespace formsolve
     }
 
     template <int dim>
-    Metadata
-    Checkpoint<dim>::load(State<dim>                   &state,
-                          const solver::Assembler<dim> &assembler) const
+    Metadata Checkpoint<dim>::load(State<dim> &state) const
     {
       // The newest complete one: a save interrupted after its rename step
       // leaves checkpoint.new or checkpoint.old complete.
@@ -223,7 +221,7 @@ namespace formsolve
                              " was written by a formsolve that stores "
                              "other fields; start the run again"));
       state.tria.load(from + "/mesh");
-      state.setup_dofs(assembler);
+      state.setup_dofs();
       parallel::distributed::SolutionTransfer<dim, VectorType> fields(
         state.dof_handler);
       std::vector<VectorType>   values(state.n_transferable_fields(),

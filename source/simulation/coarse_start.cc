@@ -43,11 +43,11 @@ namespace formsolve
     } // namespace
 
     template <int dim>
-    CoarseStartReport coarse_start(State<dim>                   &state,
-                                   solver::StepSolver<dim>      &step_solver,
-                                   const solver::Assembler<dim> &assembler,
-                                   const double                  max_dt,
-                                   const std::function<void()>  &release)
+    CoarseStartReport coarse_start(State<dim>                      &state,
+                                   solver::StepSolver<dim>         &step_solver,
+                                   const state::HistoryUpdate<dim> &update,
+                                   const double                     max_dt,
+                                   const std::function<void()>     &release)
     {
       Assert(state.step == 0, ExcMessage("only the first step starts at rest"));
       CoarseStartReport report;
@@ -83,7 +83,7 @@ namespace formsolve
         false,
         &AdaptationStrategies::Refinement::preserve<dim, dim, float>,
         &AdaptationStrategies::Coarsening::sum<dim, dim, float>);
-      const auto coarsened = refinement::adapt_flagged(state, assembler, [&]() {
+      const auto coarsened = refinement::adapt_flagged(state, update, [&]() {
         if (release)
           release();
         marks.prepare_for_coarsening_and_refinement(ones);
@@ -110,18 +110,18 @@ namespace formsolve
         if (cell->is_locally_owned() &&
             merged[cell->active_cell_index()] > 1.5f)
           cell->set_refine_flag();
-      refinement::adapt_flagged(state, assembler, release);
+      refinement::adapt_flagged(state, update, release);
       step_solver.reinit();
       Assert(tria.n_global_active_cells() == coarsened.cells_before,
              ExcMessage("the run's mesh did not come back"));
       return report;
     }
 
-#define INSTANTIATE(dim)                                                  \
-  template CoarseStartReport coarse_start(State<dim> &,                   \
-                                          solver::StepSolver<dim> &,      \
-                                          const solver::Assembler<dim> &, \
-                                          const double,                   \
+#define INSTANTIATE(dim)                                                     \
+  template CoarseStartReport coarse_start(State<dim> &,                      \
+                                          solver::StepSolver<dim> &,         \
+                                          const state::HistoryUpdate<dim> &, \
+                                          const double,                      \
                                           const std::function<void()> &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE

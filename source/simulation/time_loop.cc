@@ -34,11 +34,15 @@ namespace formsolve
         , material(run.material)
         , damage(run.material)
         , state(run, comm)
+        , history_update(material,
+                         state.kinematics,
+                         state.reference_mapping,
+                         run.mesh.degree,
+                         &damage)
         , assembler(material,
                     state.kinematics,
                     state.reference_mapping,
-                    run.mesh.degree,
-                    &damage)
+                    run.mesh.degree)
         , step_solver(run, state, assembler, timer, pcout)
         , criteria(run.refinement,
                    state.tools,
@@ -55,7 +59,7 @@ namespace formsolve
       // The transfer needs memory, and a new mesh drops the factors anyway:
       // free them then, and keep them (and their analysis) otherwise.
       const auto r =
-        refinement::adapt_mesh(state, criteria, assembler, [this]() {
+        refinement::adapt_mesh(state, criteria, history_update, [this]() {
           step_solver.release_factors();
         });
       if (!r.changed)
@@ -167,13 +171,13 @@ namespace formsolve
       writer = std::make_unique<postprocess::VtuWriter<dim>>(prm.output);
       if (resume)
         {
-          const auto meta = checkpoint.load(state, assembler);
+          const auto meta = checkpoint.load(state);
           step_solver.reinit();
           restore_loop(meta, summary);
         }
       else
         {
-          state.create_mesh(assembler);
+          state.create_mesh();
           step_solver.reinit();
           check_initial_scene();
         }
@@ -299,7 +303,7 @@ namespace formsolve
           const auto stats = step_solver.statistics(report.dt);
           {
             TimerOutput::Scope t(timer, "state update");
-            state.advance(report.dt, assembler);
+            state.advance(report.dt, history_update);
           }
           summary.steps = state.step;
           summary.n_dofs =
@@ -307,7 +311,7 @@ namespace formsolve
           summary.dof_steps += state.dof_handler.n_dofs();
           const double wall    = seconds();
           const auto   forming = measure_forming();
-          history.write(state, report, stats, assembler, forming, wall);
+          history.write(state, report, stats, forming, wall);
 
           const double travel = tools.punch_travel();
           const double force  = prm.geometry.symmetry_factor() *

@@ -86,7 +86,7 @@ namespace formsolve
     template <int dim>
     void TimeLoop<dim>::validate_scene()
     {
-      state.create_mesh(assembler);
+      state.create_mesh();
       check_initial_scene();
       pcout << "input valid: " << model::name(prm.geometry.model) << " model, "
             << state.tria.n_global_active_cells() << " cells, "

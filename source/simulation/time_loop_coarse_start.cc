@@ -19,7 +19,7 @@ namespace formsolve
       auto         r =
         coarse_start(state,
                      step_solver,
-                     assembler,
+                     history_update,
                      (state.tools.punch_stroke() - state.tools.punch_travel()) /
                        state.tools.punch_speed(),
                      [this]() { step_solver.release_factors(); });

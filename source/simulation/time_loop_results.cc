@@ -7,6 +7,7 @@
 #include <formsolve/model/dimensions.h>
 #include <formsolve/postprocess/atomic_output.h>
 #include <formsolve/simulation/time_loop.h>
+#include <formsolve/state/sheet_integrals.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -17,7 +18,7 @@ namespace formsolve
   namespace simulation
   {
     using namespace dealii;
-    using Field = simulation::QuadraturePointHistory;
+    using Field = state::QuadraturePointHistory;
 
     namespace
     {
@@ -48,14 +49,8 @@ namespace formsolve
       postprocess::FormingMeasures<dim> m;
       sheet.measure(state, damage);
       m.sheet            = sheet.summary();
-      m.oyane            = assembler.history_maximum(state.dof_handler,
-                                          *state.mapping,
-                                          state.history,
-                                          &Field::oyane);
-      m.cockcroft_latham = assembler.history_maximum(state.dof_handler,
-                                                     *state.mapping,
-                                                     state.history,
-                                                     &Field::cockcroft_latham);
+      m.oyane            = maximum(state, &Field::oyane);
+      m.cockcroft_latham = maximum(state, &Field::cockcroft_latham);
       m.cockcroft_latham_ratio =
         damage.cockcroft_latham(m.cockcroft_latham.value);
       return m;

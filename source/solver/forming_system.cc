@@ -18,7 +18,7 @@ namespace formsolve
 
     template <int dim>
     FormingSystem<dim>::FormingSystem(const parameters::Run         &prm,
-                                      simulation::State<dim>        &state,
+                                      state::State<dim>             &state,
                                       const Assembler<dim>          &assembler,
                                       contact::PenaltyStrategy<dim> &strategy,
                                       TimerOutput                   &timer)

@@ -11,7 +11,7 @@ namespace formsolve
 
     template <int dim>
     StepSolver<dim>::StepSolver(const parameters::Run    &prm,
-                                simulation::State<dim>   &state,
+                                state::State<dim>        &state,
                                 const Assembler<dim>     &assembler,
                                 TimerOutput              &timer,
                                 const ConditionalOStream &log)
@@ -37,8 +37,8 @@ namespace formsolve
       state.update_contact_areas();
       for (;;)
         {
-          const double dt = std::min(control.time_step(), max_dt);
-          const simulation::StepSnapshot start = state.snapshot();
+          const double              dt = std::min(control.time_step(), max_dt);
+          const state::StepSnapshot start = state.snapshot();
           system.begin_step(dt);
           // The previous step's velocity is the predictor, corrected where
           // it lifts nodes in contact off their tools.

@@ -11,6 +11,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <formsolve/geometry/blank_mesh.h>
+#include <formsolve/model/cell_kinematics.h>
 #include <formsolve/solver/assembler.h>
 #include <formsolve/solver/linear_solver.h>
 #include <formsolve/solver/newton_solver.h>
@@ -62,7 +63,8 @@ namespace
       matrix.reinit(owned, owned, dsp, MPI_COMM_WORLD);
       residual.reinit(owned, MPI_COMM_WORLD);
       ghost.reinit(owned, relevant, MPI_COMM_WORLD);
-      assembler.initialize_history(dof_handler, history);
+      for (const auto &cell : tria.active_cell_iterators())
+        history.initialize(cell, QGauss<3>(degree + 1).size());
     }
 
     /// Solve; return the limit moment from the dissipation.
@@ -79,12 +81,36 @@ namespace
           .solve(*this, v);
       test::close("Newton converged", report.converged, 1, 0);
       ghost = v;
-      return assembler.internal_power(dof_handler,
-                                      mapping,
-                                      ghost,
-                                      history,
-                                      dt) /
-             (2 * omega);
+      return internal_power() / (2 * omega);
+    }
+
+    /// Plastic power int sigma' : D dV plus the volumetric term (W = N
+    /// mm/s).
+    double internal_power() const
+    {
+      const unsigned int                 degree = fe.degree;
+      const QGauss<3>                    full(degree + 1), reduced(degree);
+      model::CellKinematics<3>           kf(kinematics, mapping, fe, full);
+      model::CellKinematics<3>           kr(kinematics, mapping, fe, reduced);
+      std::vector<SymmetricTensor<2, 3>> D, Dr;
+      double                             power = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            kf.reinit(cell);
+            kr.reinit(cell);
+            kf.rates(ghost, D);
+            kr.rates(ghost, Dr);
+            const auto h = history.get_data(cell);
+            for (unsigned int q = 0; q < kf.n_points(); ++q)
+              power += material.evaluate(D[q], h[q]->strain, dt, false)
+                         .deviatoric_stress *
+                       D[q] * kf.dV(q);
+            for (unsigned int q = 0; q < kr.n_points(); ++q)
+              power += material.bulk_viscosity() * trace(Dr[q]) * trace(Dr[q]) *
+                       kr.dV(q);
+          }
+      return Utilities::MPI::sum(power, MPI_COMM_WORLD);
     }
 
     double assemble(const VectorType &v, const bool newton) override

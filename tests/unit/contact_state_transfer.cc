@@ -50,7 +50,7 @@ namespace
   /// Position -> values of the last tool, gathered from all ranks.
   template <int dim>
   std::vector<std::pair<Point<dim>, Values>>
-  gather(const simulation::State<dim> &state)
+  gather(const state::State<dim> &state)
   {
     std::vector<std::pair<Point<dim>, Values>> local;
     const unsigned int                         last = state.tools.size() - 1;
@@ -70,7 +70,7 @@ namespace
   };
 
   template <int dim>
-  Errors compare(const simulation::State<dim>                     &state,
+  Errors compare(const state::State<dim>                          &state,
                  const std::vector<std::pair<Point<dim>, Values>> &before)
   {
     Errors             e;
@@ -135,8 +135,8 @@ namespace
   void check(const std::string &name, const model::Model m)
   {
     test::SmallBlank<dim> blank(m, {1, 2, dim == 2 ? 4u : 2u});
-    auto                 &state     = blank.state;
-    const auto           &assembler = blank.assembler;
+    auto                 &state  = blank.state;
+    const auto           &update = blank.update;
     AssertThrow(state.tools.size() >= 2, ExcInternalError());
 
     const unsigned int last = state.tools.size() - 1;
@@ -161,7 +161,7 @@ namespace
     // factors there) must not run.
     unsigned int hooks = 0;
     const auto   hook  = [&hooks]() { ++hooks; };
-    auto         r     = refinement::adapt_flagged(state, assembler, hook);
+    auto         r     = refinement::adapt_flagged(state, update, hook);
     test::close(name + ": no flags, mesh unchanged", r.changed, 0, 0);
     test::close(name + ": no flags, no hook", hooks, 0, 0);
 
@@ -173,7 +173,7 @@ namespace
     for (const auto &cell : state.tria.active_cell_iterators())
       if (cell->is_locally_owned() && cell->center()[0] < 0.5 * extent)
         cell->set_refine_flag();
-    r = refinement::adapt_flagged(state, assembler, hook);
+    r = refinement::adapt_flagged(state, update, hook);
     AssertThrow(r.changed && r.cells_after > r.cells_before,
                 ExcInternalError());
     test::close(name + ": refined, the hook ran once", hooks, 1, 0);
@@ -184,7 +184,7 @@ namespace
       if (cell->is_locally_owned() &&
           cell->level() + 1 == int(state.tria.n_global_levels()))
         cell->set_coarsen_flag();
-    r = refinement::adapt_flagged(state, assembler);
+    r = refinement::adapt_flagged(state, update);
     AssertThrow(r.changed, ExcInternalError());
     report(name + ", coarsened", compare(state, original), false);
   }

@@ -9,10 +9,10 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
-#include <formsolve/simulation/state.h>
 #include <formsolve/solver/assembler.h>
 #include <formsolve/solver/linear_solver.h>
 #include <formsolve/solver/newton_solver.h>
+#include <formsolve/state/state.h>
 
 #include "check.h"
 
@@ -26,9 +26,12 @@ namespace
   class Tension : public solver::NonlinearSystem
   {
   public:
-    Tension(simulation::State<3> &state, const solver::Assembler<3> &assembler)
+    Tension(state::State<3>               &state,
+            const solver::Assembler<3>    &assembler,
+            const state::HistoryUpdate<3> &update)
         : state(state)
         , assembler(assembler)
+        , update(update)
         , linear(parameters::LinearSolver(), {}, false)
     {
       // The state's constraints (symmetry planes x = 0, y = 0) plus v_z = 0
@@ -87,7 +90,7 @@ namespace
         solver::NewtonSolver(p, ConditionalOStream(std::cout, false))
           .solve(*this, state.velocity);
       test::close("Newton converged", r.converged, 1, 0);
-      state.advance(dt, assembler);
+      state.advance(dt, update);
     }
 
     double assemble(const VectorType &v, const bool newton) override
@@ -120,13 +123,14 @@ namespace
     bool contact_set_changed() override { return false; }
 
   private:
-    simulation::State<3>       &state;
-    const solver::Assembler<3> &assembler;
-    AffineConstraints<double>   bc, homogeneous;
-    solver::MatrixType          matrix;
-    solver::VectorType          residual;
-    solver::LinearSolver        linear;
-    double                      scale = 0;
+    state::State<3>               &state;
+    const solver::Assembler<3>    &assembler;
+    const state::HistoryUpdate<3> &update;
+    AffineConstraints<double>      bc, homogeneous;
+    solver::MatrixType             matrix;
+    solver::VectorType             residual;
+    solver::LinearSolver           linear;
+    double                         scale = 0;
   };
 } // namespace
 
@@ -150,14 +154,18 @@ int main(int argc, char **argv)
 
   const material::RigidViscoplastic material(prm.material);
   const material::DamageCriteria    damage(prm.material);
-  simulation::State<3>              state(prm, MPI_COMM_WORLD);
+  state::State<3>                   state(prm, MPI_COMM_WORLD);
   const solver::Assembler<3>        assembler(material,
+                                       state.kinematics,
+                                       state.reference_mapping,
+                                       1);
+  const state::HistoryUpdate<3>     update(material,
                                        state.kinematics,
                                        state.reference_mapping,
                                        1,
                                        &damage);
-  state.create_mesh(assembler);
-  Tension tension(state, assembler);
+  state.create_mesh();
+  Tension tension(state, assembler, update);
 
   // The expected Cockcroft-Latham integral along the discrete strain path:
   // sigma_bar at the end-of-step strain times the step's strain increment.

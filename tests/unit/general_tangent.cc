@@ -122,8 +122,8 @@ namespace
           std::tuple{"stress-velocity", true, true}})
       {
         const VectorType v = velocity(1.3);
-        for (auto *a : {&product, static_cast<const solver::Assembler<dim> *>(
-                                    &general)})
+        for (auto *a :
+             {&product, static_cast<const solver::Assembler<dim> *>(&general)})
           a->assemble_body(state.dof_handler,
                            *state.mapping,
                            state.constraints,

@@ -14,7 +14,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <formsolve/refinement/adapt.h>
-#include <formsolve/solver/assembler.h>
+#include <formsolve/state/sheet_integrals.h>
 
 #include "check.h"
 #include "small_blank.h"
@@ -27,7 +27,7 @@ using namespace formsolve;
 
 namespace
 {
-  using History = simulation::QuadraturePointHistory;
+  using History = state::QuadraturePointHistory;
 
   /// A displacement that bends and stretches the sheet unevenly (mm), in
   /// Q1 on every cell (products of distinct coordinates), so that coarsening
@@ -66,7 +66,7 @@ namespace
   };
 
   template <int dim>
-  Extremes extremes(const simulation::State<dim> &state,
+  Extremes extremes(const state::State<dim> &state,
                     const double History::*field)
   {
     Extremes e;
@@ -93,21 +93,21 @@ namespace
   /// The volume error of every locally owned cell, with the cell.
   template <int dim>
   std::vector<std::pair<typename Triangulation<dim>::cell_iterator, double>>
-  volume_errors(simulation::State<dim>       &state,
-                const solver::Assembler<dim> &assembler)
+  volume_errors(state::State<dim>               &state,
+                const state::HistoryUpdate<dim> &update)
   {
     // The exchange turns offsets into errors; a second one turns them back.
-    assembler.exchange_volume_offsets(state.dof_handler,
-                                      *state.mapping,
-                                      state.history);
+    update.exchange_volume_offsets(state.dof_handler,
+                                   *state.mapping,
+                                   state.history);
     std::vector<std::pair<typename Triangulation<dim>::cell_iterator, double>>
       e;
     for (const auto &cell : state.tria.active_cell_iterators())
       if (cell->is_locally_owned())
         e.emplace_back(cell, state.history.get_data(cell)[0]->volume_offset);
-    assembler.exchange_volume_offsets(state.dof_handler,
-                                      *state.mapping,
-                                      state.history);
+    update.exchange_volume_offsets(state.dof_handler,
+                                   *state.mapping,
+                                   state.history);
     return e;
   }
 
@@ -119,43 +119,42 @@ namespace
   };
 
   template <int dim>
-  Measures measure(const simulation::State<dim> &state,
-                   const solver::Assembler<dim> &assembler)
+  Measures measure(const state::State<dim>         &state,
+                   const state::HistoryUpdate<dim> &update)
   {
     const auto &dofs = state.dof_handler;
     const auto &ref  = state.reference_mapping;
-    return {
-      extremes(state, &History::oyane),
-      extremes(state, &History::strain),
-      assembler.history_integral(dofs, ref, state.history, &History::oyane),
-      assembler.history_integral(dofs, ref, state.history, &History::strain)};
+    return {extremes(state, &History::oyane),
+            extremes(state, &History::strain),
+            integral(state, &History::oyane, &ref),
+            integral(state, &History::strain, &ref)};
   }
 
   template <int dim>
-  void check_adaptation(const std::string            &name,
-                        simulation::State<dim>       &state,
-                        const solver::Assembler<dim> &assembler,
-                        const bool                    refine)
+  void check_adaptation(const std::string               &name,
+                        state::State<dim>               &state,
+                        const state::HistoryUpdate<dim> &update,
+                        const bool                       refine)
   {
-    const auto before_values = measure(state, assembler);
+    const auto before_values = measure(state, update);
     // Before: by each cell's reference centre, from all ranks (cells move
     // between ranks with the new partition).
     std::vector<std::pair<Key, double>> local;
-    for (const auto &[cell, e] : volume_errors(state, assembler))
+    for (const auto &[cell, e] : volume_errors(state, update))
       local.emplace_back(key<dim>(cell->center()), e);
     std::map<Key, double> before;
     for (const auto &part : Utilities::MPI::all_gather(state.comm, local))
       before.insert(part.begin(), part.end());
 
-    const auto r = refinement::adapt_flagged(state, assembler);
+    const auto r = refinement::adapt_flagged(state, update);
     AssertThrow(r.changed, ExcInternalError());
 
-    const auto after_values = measure(state, assembler);
+    const auto after_values = measure(state, update);
     // A cell left alone against itself, a child against its parent, a
     // parent against the mean of its children (equal reference volumes).
     double       mismatch = 0, largest = 0;
     unsigned int compared = 0;
-    for (const auto &[cell, e] : volume_errors(state, assembler))
+    for (const auto &[cell, e] : volume_errors(state, update))
       {
         double expected = 0;
         if (before.count(key<dim>(cell->center())))
@@ -244,8 +243,8 @@ namespace
   void check(const std::string &name, const model::Model m)
   {
     test::SmallBlank<dim> blank(m, {1, 2, dim == 2 ? 4u : 2u});
-    auto                 &state     = blank.state;
-    const auto           &assembler = blank.assembler;
+    auto                 &state  = blank.state;
+    const auto           &update = blank.update;
 
     VectorTools::interpolate(state.reference_mapping,
                              state.dof_handler,
@@ -276,13 +275,13 @@ namespace
     for (const auto &cell : state.tria.active_cell_iterators())
       if (cell->is_locally_owned() && cell->center()[0] < 0.5 * extent)
         cell->set_refine_flag();
-    check_adaptation(name + ", refined", state, assembler, true);
+    check_adaptation(name + ", refined", state, update, true);
 
     for (const auto &cell : state.tria.active_cell_iterators())
       if (cell->is_locally_owned() &&
           cell->level() + 1 == int(state.tria.n_global_levels()))
         cell->set_coarsen_flag();
-    check_adaptation(name + ", coarsened", state, assembler, false);
+    check_adaptation(name + ", coarsened", state, update, false);
   }
 } // namespace
 

@@ -6,8 +6,8 @@
 #include <deal.II/base/mpi.h>
 
 #include <formsolve/parameters/parameters.h>
-#include <formsolve/simulation/state.h>
 #include <formsolve/solver/assembler.h>
+#include <formsolve/state/state.h>
 
 namespace test
 {
@@ -40,13 +40,15 @@ namespace test
         , material(prm.material)
         , state(prm, MPI_COMM_WORLD)
         , assembler(material, state.kinematics, state.reference_mapping, 1)
+        , update(material, state.kinematics, state.reference_mapping, 1)
     {
-      state.create_mesh(assembler);
+      state.create_mesh();
     }
 
     const formsolve::parameters::Run             prm;
     const formsolve::material::RigidViscoplastic material;
-    formsolve::simulation::State<dim>            state;
+    formsolve::state::State<dim>                 state;
     const formsolve::solver::Assembler<dim>      assembler;
+    const formsolve::state::HistoryUpdate<dim>   update;
   };
 } // namespace test

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <formsolve/postprocess/vtu_writer.h>
-#include <formsolve/simulation/state.h>
+#include <formsolve/state/state.h>
 
 #include <array>
 #include <vector>
@@ -18,9 +18,9 @@ namespace formsolve
     public:
       /// Fills the fields from the state's contact set with factors
       /// @p epsilon (one per pair); the gap is capped at @p search_distance.
-      void fill(const simulation::State<dim> &state,
-                const std::vector<double>    &epsilon,
-                const double                  search_distance);
+      void fill(const state::State<dim>   &state,
+                const std::vector<double> &epsilon,
+                const double               search_distance);
 
       /// The three fields as named nodal scalars (valid until the next fill).
       std::vector<NodalScalar> scalars() const;

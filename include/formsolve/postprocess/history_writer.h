@@ -5,9 +5,9 @@
 #include <formsolve/contact/contact_statistics.h>
 #include <formsolve/postprocess/sheet_measures.h>
 #include <formsolve/postprocess/statistics_table.h>
-#include <formsolve/simulation/state.h>
-#include <formsolve/solver/assembler.h>
 #include <formsolve/solver/step_solver.h>
+#include <formsolve/state/sheet_integrals.h>
+#include <formsolve/state/state.h>
 
 namespace formsolve
 {
@@ -18,10 +18,10 @@ namespace formsolve
     template <int dim>
     struct FormingMeasures
     {
-      SheetSummary<dim>           sheet;
-      solver::HistoryMaximum<dim> oyane;            // I (-)
-      solver::HistoryMaximum<dim> cockcroft_latham; // integral W (MPa)
-      double cockcroft_latham_ratio = 0;            // W / C_crit, 0 unset
+      SheetSummary<dim>          sheet;
+      state::HistoryMaximum<dim> oyane;            // I (-)
+      state::HistoryMaximum<dim> cockcroft_latham; // integral W (MPa)
+      double cockcroft_latham_ratio = 0;           // W / C_crit, 0 unset
     };
 
     template <int dim>
@@ -31,14 +31,12 @@ namespace formsolve
       /// Creates <Output directory>/history.csv (rank 0) with the columns of
       /// the tools of @p state.
       /// With @p keep_rows >= 0, a resumed run: the file keeps that many rows.
-      HistoryWriter(const simulation::State<dim> &state,
-                    const int                     keep_rows = -1);
+      HistoryWriter(const state::State<dim> &state, const int keep_rows = -1);
 
       /// One row for the step just advanced. Forces are for the full part.
-      void write(const simulation::State<dim>          &state,
+      void write(const state::State<dim>               &state,
                  const solver::StepReport              &report,
                  const contact::ContactStatistics<dim> &stats,
-                 const solver::Assembler<dim>          &assembler,
                  const FormingMeasures<dim>            &forming,
                  const double                           wall_time);
 

@@ -15,7 +15,7 @@
 #include <formsolve/material/damage.h>
 #include <formsolve/material/forming_limit.h>
 #include <formsolve/postprocess/vtu_writer.h>
-#include <formsolve/simulation/state.h>
+#include <formsolve/state/state.h>
 
 #include <array>
 #include <map>
@@ -63,7 +63,7 @@ namespace formsolve
 
       /// Measures the sheet of @p state (collective). The summary is valid on
       /// every rank, the columns on rank 0.
-      void measure(const simulation::State<dim>   &state,
+      void measure(const state::State<dim>        &state,
                    const material::DamageCriteria &damage);
 
       const SheetSummary<dim>             &summary() const { return sum; }
@@ -73,8 +73,7 @@ namespace formsolve
       /// Nodal fields thickness, thinning, major_strain, minor_strain,
       /// safety_zone for the VTU files (collective; valid until the next
       /// call).
-      std::vector<NodalScalar>
-      nodal_fields(const simulation::State<dim> &state);
+      std::vector<NodalScalar> nodal_fields(const state::State<dim> &state);
 
       /// sheet.csv (one row per column) and flc.csv (the limit curve), rank 0.
       void write_csv(const std::string &directory) const;
@@ -98,7 +97,7 @@ namespace formsolve
       };
       /// This rank's surface nodes, the cells cut by the reference mid-plane
       /// and every cell's damage.
-      Records local_records(const simulation::State<dim>   &state,
+      Records local_records(const state::State<dim>        &state,
                             const material::DamageCriteria &damage) const;
       /// Rank 0: cols and keys from the records of all ranks
       /// (source/postprocess/sheet_columns.cc).

@@ -7,7 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <formsolve/parameters/output.h>
-#include <formsolve/simulation/quadrature_history.h>
+#include <formsolve/state/quadrature_history.h>
 
 #include <string>
 #include <utility>
@@ -31,10 +31,10 @@ namespace formsolve
     template <int dim>
     struct OutputFields
     {
-      const VectorType                      *velocity     = nullptr; // ghosted
-      const VectorType                      *displacement = nullptr; // ghosted
-      std::vector<NodalScalar>               nodal;
-      const simulation::HistoryStorage<dim> *history = nullptr;
+      const VectorType                 *velocity     = nullptr; // ghosted
+      const VectorType                 *displacement = nullptr; // ghosted
+      std::vector<NodalScalar>          nodal;
+      const state::HistoryStorage<dim> *history = nullptr;
     };
 
     template <int dim>

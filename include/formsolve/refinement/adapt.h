@@ -4,8 +4,8 @@
 #pragma once
 
 #include <formsolve/refinement/mesh_refinement.h>
-#include <formsolve/simulation/state.h>
-#include <formsolve/solver/assembler.h>
+#include <formsolve/state/history_update.h>
+#include <formsolve/state/state.h>
 
 #include <functional>
 
@@ -30,16 +30,16 @@ namespace formsolve
     /// the transfer (the caller frees what the new mesh makes useless, e.g.
     /// the factors, whose memory the transfer may need); not otherwise.
     template <int dim>
-    AdaptReport adapt_mesh(simulation::State<dim>        &state,
-                           const RefinementCriteria<dim> &criteria,
-                           const solver::Assembler<dim>  &assembler,
-                           const std::function<void()>   &before_change = {});
+    AdaptReport adapt_mesh(state::State<dim>               &state,
+                           const RefinementCriteria<dim>   &criteria,
+                           const state::HistoryUpdate<dim> &update,
+                           const std::function<void()>     &before_change = {});
 
     /// The same for the refinement and coarsening flags already set on
     /// @p state's triangulation (locally owned cells), whoever set them.
     template <int dim>
-    AdaptReport adapt_flagged(simulation::State<dim>       &state,
-                              const solver::Assembler<dim> &assembler,
-                              const std::function<void()>  &before_change = {});
+    AdaptReport adapt_flagged(state::State<dim>               &state,
+                              const state::HistoryUpdate<dim> &update,
+                              const std::function<void()> &before_change = {});
   } // namespace refinement
 } // namespace formsolve

@@ -8,7 +8,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <formsolve/model/kinematics.h>
-#include <formsolve/simulation/quadrature_history.h>
+#include <formsolve/state/quadrature_history.h>
 
 #include <memory>
 #include <vector>
@@ -40,11 +40,11 @@ namespace formsolve
 
       /// Before tria.execute_coarsening_and_refinement() (collective).
       void prepare(dealii::parallel::distributed::Triangulation<dim> &tria,
-                   simulation::HistoryStorage<dim>                   &history);
+                   state::HistoryStorage<dim>                        &history);
 
       /// After it, with @p history initialised on the new locally owned
       /// cells.
-      void interpolate(simulation::HistoryStorage<dim> &history);
+      void interpolate(state::HistoryStorage<dim> &history);
 
     private:
       using CellValues   = std::vector<std::vector<double>>;

@@ -8,7 +8,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <formsolve/parameters/parameters.h>
-#include <formsolve/simulation/quadrature_history.h>
+#include <formsolve/state/quadrature_history.h>
 #include <formsolve/tools/tool_set.h>
 
 #include <vector>

@@ -3,8 +3,7 @@
 // loop's own values, written atomically into <Output directory>/checkpoint.
 #pragma once
 
-#include <formsolve/simulation/state.h>
-#include <formsolve/solver/assembler.h>
+#include <formsolve/state/state.h>
 
 #include <map>
 #include <string>
@@ -13,6 +12,9 @@ namespace formsolve
 {
   namespace simulation
   {
+    using state::State;
+    using state::VectorType;
+
     /// What the time loop needs besides the State, as text key = value.
     using Metadata = std::map<std::string, std::string>;
 
@@ -36,8 +38,7 @@ namespace formsolve
       /// Loads the newest complete checkpoint into @p state, whose
       /// triangulation must be empty; returns the time loop's values.
       /// Throws naming --resume if there is none, or if it is another case's.
-      Metadata load(State<dim>                   &state,
-                    const solver::Assembler<dim> &assembler) const;
+      Metadata load(State<dim> &state) const;
 
     private:
       std::string directory, parameters;

@@ -4,9 +4,9 @@
 // (doc/theory.md section 8a).
 #pragma once
 
-#include <formsolve/simulation/state.h>
-#include <formsolve/solver/assembler.h>
 #include <formsolve/solver/step_solver.h>
+#include <formsolve/state/history_update.h>
+#include <formsolve/state/state.h>
 
 #include <functional>
 #include <string>
@@ -15,6 +15,9 @@ namespace formsolve
 {
   namespace simulation
   {
+    using state::State;
+    using state::VectorType;
+
     struct CoarseStartReport
     {
       bool   used        = false; // a coarse solve ran
@@ -35,10 +38,10 @@ namespace formsolve
     /// Nonlinear solver/Coarse cell size limit sheet thicknesses in the
     /// plane. @p release runs before each mesh change (frees the factors).
     template <int dim>
-    CoarseStartReport coarse_start(State<dim>                   &state,
-                                   solver::StepSolver<dim>      &step_solver,
-                                   const solver::Assembler<dim> &assembler,
-                                   const double                  max_dt,
-                                   const std::function<void()>  &release);
+    CoarseStartReport coarse_start(State<dim>                      &state,
+                                   solver::StepSolver<dim>         &step_solver,
+                                   const state::HistoryUpdate<dim> &update,
+                                   const double                     max_dt,
+                                   const std::function<void()>     &release);
   } // namespace simulation
 } // namespace formsolve

@@ -18,9 +18,9 @@
 #include <formsolve/postprocess/vtu_writer.h>
 #include <formsolve/refinement/mesh_refinement.h>
 #include <formsolve/simulation/checkpoint.h>
-#include <formsolve/simulation/state.h>
 #include <formsolve/solver/assembler.h>
 #include <formsolve/solver/step_solver.h>
+#include <formsolve/state/state.h>
 
 #include <functional>
 #include <memory>
@@ -30,6 +30,9 @@ namespace formsolve
 {
   namespace simulation
   {
+    using state::State;
+    using state::VectorType;
+
     /// Summary of a finished run (for tests and benchmarks).
     struct RunSummary
     {
@@ -121,6 +124,7 @@ namespace formsolve
       material::RigidViscoplastic                   material;
       material::DamageCriteria                      damage;
       State<dim>                                    state;
+      state::HistoryUpdate<dim>                     history_update;
       solver::Assembler<dim>                        assembler;
       solver::StepSolver<dim>                       step_solver;
       refinement::RefinementCriteria<dim>           criteria;

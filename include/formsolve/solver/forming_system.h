@@ -8,13 +8,13 @@
 
 #include <formsolve/contact/contact_search.h>
 #include <formsolve/contact/penalty_strategy.h>
-#include <formsolve/simulation/state.h>
 #include <formsolve/solver/assembler.h>
 #include <formsolve/solver/cell_scatter.h>
 #include <formsolve/solver/factor_reuse.h>
 #include <formsolve/solver/holder_coupling.h>
 #include <formsolve/solver/linear_solver.h>
 #include <formsolve/solver/newton_solver.h>
+#include <formsolve/state/state.h>
 
 #include <array>
 #include <memory>
@@ -29,7 +29,7 @@ namespace formsolve
     {
     public:
       FormingSystem(const parameters::Run         &prm,
-                    simulation::State<dim>        &state,
+                    state::State<dim>             &state,
                     const Assembler<dim>          &assembler,
                     contact::PenaltyStrategy<dim> &strategy,
                     dealii::TimerOutput           &timer);
@@ -132,7 +132,7 @@ namespace formsolve
       bool holder_controlled() const { return state.holder.force_control; }
 
       const parameters::Run         &prm;
-      simulation::State<dim>        &state;
+      state::State<dim>             &state;
       const Assembler<dim>          &assembler;
       contact::PenaltyStrategy<dim> &strategy;
       dealii::TimerOutput           &timer;

@@ -8,10 +8,10 @@
 
 #include <formsolve/contact/contact_statistics.h>
 #include <formsolve/contact/penalty_strategy.h>
-#include <formsolve/simulation/state.h>
 #include <formsolve/solver/forming_system.h>
 #include <formsolve/solver/newton_solver.h>
 #include <formsolve/solver/step_control.h>
+#include <formsolve/state/state.h>
 
 #include <memory>
 #include <string>
@@ -45,7 +45,7 @@ namespace formsolve
     {
     public:
       StepSolver(const parameters::Run            &prm,
-                 simulation::State<dim>           &state,
+                 state::State<dim>                &state,
                  const Assembler<dim>             &assembler,
                  dealii::TimerOutput              &timer,
                  const dealii::ConditionalOStream &log);
@@ -76,7 +76,7 @@ namespace formsolve
 
     private:
       const parameters::Run                         &prm;
-      simulation::State<dim>                        &state;
+      state::State<dim>                             &state;
       std::unique_ptr<contact::PenaltyStrategy<dim>> strategy;
       FormingSystem<dim>                             system;
       NewtonSolver                                   newton;

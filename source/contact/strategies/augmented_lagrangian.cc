@@ -47,6 +47,11 @@ namespace formsolve
       template <int dim>
       std::unique_ptr<PenaltyStrategy<dim>> create(const parameters::Contact &p)
       {
+        AssertThrow(p.max_strict_passes > 0,
+                    dealii::ExcMessage(
+                      "Parameter Contact/Max strict passes: must be at least "
+                      "1 for augmented-lagrangian (its Uzawa updates are the "
+                      "passes)"));
         parameters::Contact inner = p;
         inner.penalty_strategy    = p.al_penalty;
         return std::make_unique<AugmentedLagrangian<dim>>(

@@ -9,7 +9,7 @@
 
 namespace formsolve
 {
-  namespace simulation
+  namespace state
   {
     struct QuadraturePointHistory
         : public dealii::TransferableQuadraturePointData
@@ -71,5 +71,5 @@ namespace formsolve
     using HistoryStorage = dealii::CellDataStorage<
       typename dealii::Triangulation<dim>::cell_iterator,
       QuadraturePointHistory>;
-  } // namespace simulation
+  } // namespace state
 } // namespace formsolve

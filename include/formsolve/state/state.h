@@ -4,6 +4,7 @@
 // control saves and restores the part a failed step may have touched.
 #pragma once
 
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -16,7 +17,8 @@
 #include <formsolve/model/current_mapping.h>
 #include <formsolve/model/kinematics.h>
 #include <formsolve/parameters/parameters.h>
-#include <formsolve/simulation/quadrature_history.h>
+#include <formsolve/state/history_update.h>
+#include <formsolve/state/quadrature_history.h>
 #include <formsolve/tools/tool_set.h>
 
 #include <memory>
@@ -24,13 +26,7 @@
 
 namespace formsolve
 {
-  namespace solver
-  {
-    template <int dim>
-    class Assembler;
-  }
-
-  namespace simulation
+  namespace state
   {
     using VectorType = dealii::TrilinosWrappers::MPI::Vector;
 
@@ -59,12 +55,12 @@ namespace formsolve
       State(const parameters::Run &run, const MPI_Comm comm);
 
       /// The blank mesh of Geometry and Mesh, then setup_dofs().
-      void create_mesh(const solver::Assembler<dim> &assembler);
+      void create_mesh();
       /// DoFs, constraints (hanging nodes, symmetry planes, axis), vectors,
-      /// mapping, history entries (@p assembler's rule), contact nodes and a
-      /// fresh contact state for the current mesh (after creation or
-      /// adaptation).
-      void setup_dofs(const solver::Assembler<dim> &assembler);
+      /// mapping, history entries (at the points of history_rule), contact
+      /// nodes and a fresh contact state for the current mesh (after creation
+      /// or adaptation).
+      void setup_dofs();
       /// The mapping's support points from the displacement: after every
       /// change of it.
       void update_mapping();
@@ -72,7 +68,7 @@ namespace formsolve
       void update_contact_areas();
 
       /// After a converged step of @p dt: history, geometry, tools, time.
-      void advance(const double dt, const solver::Assembler<dim> &assembler);
+      void advance(const double dt, const HistoryUpdate<dim> &update);
 
       StepSnapshot snapshot() const;
       void         restore(const StepSnapshot &s);
@@ -107,9 +103,12 @@ namespace formsolve
       dealii::parallel::distributed::Triangulation<dim> tria;
       dealii::FESystem<dim>                             fe;
       dealii::DoFHandler<dim>                           dof_handler;
-      dealii::IndexSet                                  owned, relevant;
-      dealii::AffineConstraints<double>                 constraints;
-      dealii::MappingQ<dim>                             reference_mapping;
+      /// The material points: where the history lives and the deviatoric
+      /// stress is integrated (Gauss, degree + 1 points per direction).
+      const dealii::QGauss<dim>         history_rule;
+      dealii::IndexSet                  owned, relevant;
+      dealii::AffineConstraints<double> constraints;
+      dealii::MappingQ<dim>             reference_mapping;
       /// The current configuration (reference mapping + displacement),
       /// refreshed by update_mapping().
       std::unique_ptr<model::CurrentMapping<dim>> mapping;
@@ -126,5 +125,5 @@ namespace formsolve
       double       time = 0;
       unsigned int step = 0;
     };
-  } // namespace simulation
+  } // namespace state
 } // namespace formsolve

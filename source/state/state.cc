@@ -6,14 +6,13 @@
 #include <formsolve/contact/contact_search.h>
 #include <formsolve/geometry/blank_mesh.h>
 #include <formsolve/model/dimensions.h>
-#include <formsolve/simulation/state.h>
-#include <formsolve/solver/assembler.h>
+#include <formsolve/state/state.h>
 
 #include <limits>
 
 namespace formsolve
 {
-  namespace simulation
+  namespace state
   {
     using namespace dealii;
 
@@ -25,6 +24,7 @@ namespace formsolve
         , tria(comm)
         , fe(FE_Q<dim>(run.mesh.degree), dim)
         , dof_handler(tria)
+        , history_rule(run.mesh.degree + 1)
         , reference_mapping(run.mesh.degree)
         , tools(run.tools, run.contact, run.geometry.thickness)
     {
@@ -37,14 +37,14 @@ namespace formsolve
     }
 
     template <int dim>
-    void State<dim>::create_mesh(const solver::Assembler<dim> &assembler)
+    void State<dim>::create_mesh()
     {
       geometry::create_blank_mesh(prm.geometry, prm.mesh, tria);
-      setup_dofs(assembler);
+      setup_dofs();
     }
 
     template <int dim>
-    void State<dim>::setup_dofs(const solver::Assembler<dim> &assembler)
+    void State<dim>::setup_dofs()
     {
       mapping.reset();
       dof_handler.distribute_dofs(fe);
@@ -82,7 +82,9 @@ namespace formsolve
       mapping = std::make_unique<model::CurrentMapping<dim>>(prm.mesh.degree);
       update_mapping();
       history.clear();
-      assembler.initialize_history(dof_handler, history);
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          history.initialize(cell, history_rule.size());
       contact::ContactSearch<dim>(prm.contact.search_distance)
         .setup(dof_handler, reference_mapping, contact_set);
       contact_state.reset(contact_set.nodes.size(), tools.size());
@@ -104,15 +106,10 @@ namespace formsolve
     }
 
     template <int dim>
-    void State<dim>::advance(const double                  dt,
-                             const solver::Assembler<dim> &assembler)
+    void State<dim>::advance(const double dt, const HistoryUpdate<dim> &update)
     {
       velocity_ghost = velocity;
-      assembler.update_history(dof_handler,
-                               *mapping,
-                               velocity_ghost,
-                               dt,
-                               history);
+      update.advance(dof_handler, *mapping, velocity_ghost, dt, history);
       displacement.add(dt, velocity);
       displacement_ghost = displacement;
       update_mapping();
@@ -232,5 +229,5 @@ namespace formsolve
 #define INSTANTIATE(dim) template struct State<dim>;
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
-  } // namespace simulation
+  } // namespace state
 } // namespace formsolve
