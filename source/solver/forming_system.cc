@@ -65,6 +65,8 @@ namespace formsolve
       scatter.reinit(state.dof_handler, state.constraints, matrix);
       residual.reinit(state.owned, state.comm);
       body_residual.reinit(state.owned, state.comm);
+      direction.reinit(state.owned, state.comm);
+      trial.reinit(state.owned, state.comm);
       factor_reuse.reinit(state.owned, state.comm);
       holder.reinit(state.owned, state.comm);
       epsilon.clear();
@@ -106,6 +108,8 @@ namespace formsolve
       factor_reuse.begin_solve();
       w_accepted = w_trial = state.holder.velocity;
       dw                   = 0;
+      iterate              = &state.velocity;
+      direction            = 0;
     }
 
     template <int dim>
@@ -186,12 +190,6 @@ namespace formsolve
     }
 
     template <int dim>
-    double FormingSystem<dim>::assemble_residual(const VectorType &v)
-    {
-      return evaluate(v, last_newton, false);
-    }
-
-    template <int dim>
     double FormingSystem<dim>::evaluate(const VectorType &v,
                                         const bool        newton,
                                         const bool        with_matrix)
@@ -248,7 +246,75 @@ namespace formsolve
     }
 
     template <int dim>
-    unsigned int FormingSystem<dim>::solve(VectorType &dv)
+    Evaluation FormingSystem<dim>::evaluate(const double        alpha,
+                                            const Linearisation kind,
+                                            const bool          tangent_now)
+    {
+      trial = *iterate;
+      trial.add(alpha, direction);
+      set_step_length(alpha);
+      const bool   newton = kind != Linearisation::secant;
+      const double r      = kind == Linearisation::exact ? assemble_exact(trial)
+                            : tangent_now ? assemble(trial, newton)
+                                          : assemble_deferred(trial, newton);
+      last_evaluation     = norms(r);
+      last_evaluation.slope = directional_derivative(direction);
+      return last_evaluation;
+    }
+
+    template <int dim>
+    Direction FormingSystem<dim>::solve(const double tolerance)
+    {
+      linear_solver->set_forcing(tolerance);
+      Direction d;
+      direction           = 0;
+      d.linear_iterations = solve_direction(direction);
+      d.norm              = direction.l2_norm();
+      trial               = *iterate;
+      trial.add(1., direction);
+      d.full_step_norm = trial.l2_norm();
+      d.extra_relative = extra_correction();
+      d.slope          = directional_derivative(direction);
+      return d;
+    }
+
+    template <int dim>
+    Accepted FormingSystem<dim>::accept()
+    {
+      *iterate = trial;
+      accept_step();
+      Accepted     a;
+      const double r = update_penalty();
+      a.evaluation   = r >= 0 ? norms(r) : norms(last_evaluation.residual);
+      a.active_set_changed = contact_set_changed();
+      a.norm               = iterate->l2_norm();
+      a.extra_relative     = extra_correction();
+      return a;
+    }
+
+    template <int dim>
+    bool FormingSystem<dim>::tighten(Evaluation &evaluation)
+    {
+      const double r = correct_penalty();
+      if (r < 0)
+        return false;
+      evaluation = norms(r);
+      return true;
+    }
+
+    template <int dim>
+    Evaluation FormingSystem<dim>::norms(const double r) const
+    {
+      Evaluation e;
+      e.residual       = r;
+      e.extra          = extra_residual_norm();
+      e.extra_relative = extra_residual();
+      e.scale          = f_scale;
+      return e;
+    }
+
+    template <int dim>
+    unsigned int FormingSystem<dim>::solve_direction(VectorType &dv)
     {
       complete_tangent();
       TimerOutput::Scope t(timer, "linear solve");

@@ -50,7 +50,6 @@ namespace formsolve
             {
               system.begin_solve();
               const auto r = newton.solve(system,
-                                          state.velocity,
                                           passes < prm.contact.max_strict_passes
                                             ? prm.contact.strict_check_residual
                                             : 0.);

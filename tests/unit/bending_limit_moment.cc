@@ -17,6 +17,7 @@
 #include <formsolve/solver/newton_solver.h>
 
 #include "check.h"
+#include "toy_problem.h"
 
 using namespace dealii;
 using namespace formsolve;
@@ -25,7 +26,7 @@ namespace
 {
   const double L = 4, b = 1, t = 1, sigma0 = 100, omega = 0.1, dt = 1e-3;
 
-  class Bending : public solver::NonlinearSystem
+  class Bending : public test::ToyProblem
   {
   public:
     Bending(const unsigned int degree,
@@ -77,8 +78,9 @@ namespace
       p.correction_tolerance  = 1e-9;
       p.max_line_search_steps = 8;
       const auto report =
-        solver::NewtonSolver(p, ConditionalOStream(std::cout, false))
-          .solve(*this, v);
+        solve_from(solver::NewtonSolver(p,
+                                        ConditionalOStream(std::cout, false)),
+                   v);
       test::close("Newton converged", report.converged, 1, 0);
       ghost = v;
       return internal_power() / (2 * omega);
@@ -140,7 +142,6 @@ namespace
       homogeneous.distribute(dv);
       return its;
     }
-    bool contact_set_changed() override { return false; }
 
   private:
     static parameters::Material material_parameters()

@@ -15,6 +15,7 @@
 #include <formsolve/state/state.h>
 
 #include "check.h"
+#include "toy_problem.h"
 
 using namespace dealii;
 using namespace formsolve;
@@ -23,7 +24,7 @@ namespace
 {
   const double h = 2, V = 0.2, dt = 0.25; // height (mm), end speed (mm/s)
 
-  class Tension : public solver::NonlinearSystem
+  class Tension : public test::ToyProblem
   {
   public:
     Tension(state::State<3>               &state,
@@ -87,8 +88,9 @@ namespace
       p.correction_tolerance  = 1e-11;
       p.max_line_search_steps = 8;
       const auto r =
-        solver::NewtonSolver(p, ConditionalOStream(std::cout, false))
-          .solve(*this, state.velocity);
+        solve_from(solver::NewtonSolver(p,
+                                        ConditionalOStream(std::cout, false)),
+                   state.velocity);
       test::close("Newton converged", r.converged, 1, 0);
       state.advance(dt, update);
     }
@@ -120,7 +122,6 @@ namespace
       homogeneous.distribute(dv);
       return its;
     }
-    bool contact_set_changed() override { return false; }
 
   private:
     state::State<3>               &state;

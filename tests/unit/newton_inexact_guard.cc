@@ -10,6 +10,7 @@
 #include <formsolve/solver/newton_solver.h>
 
 #include "check.h"
+#include "toy_problem.h"
 
 #include <algorithm>
 #include <vector>
@@ -18,7 +19,7 @@ using namespace formsolve;
 
 namespace
 {
-  class InexactLine : public solver::NonlinearSystem
+  class InexactLine : public test::ToyProblem
   {
   public:
     explicit InexactLine(const dealii::IndexSet &owned)
@@ -37,7 +38,6 @@ namespace
     {
       return r * dv;
     }
-    bool contact_set_changed() override { return false; }
     void set_linear_tolerance(const double t) override { tolerance = t; }
     unsigned int solve(VectorType &dv) override
     {
@@ -66,9 +66,9 @@ int main(int argc, char **argv)
   p.max_iterations  = 10;
   const dealii::ConditionalOStream quiet(std::cout, false);
 
-  InexactLine                         system(one);
-  solver::NonlinearSystem::VectorType v(one, MPI_COMM_WORLD);
-  const auto report = solver::NewtonSolver(p, quiet).solve(system, v);
+  InexactLine                  system(one);
+  test::ToyProblem::VectorType v(one, MPI_COMM_WORLD);
+  const auto report = system.solve_from(solver::NewtonSolver(p, quiet), v);
   std::cout << report.iterations << " iterations, x = " << v[0]
             << ", largest |r| " << system.largest << ", tolerances";
   for (const double t : system.tolerances)

@@ -20,6 +20,7 @@
 #include <formsolve/solver/newton_solver.h>
 
 #include "check.h"
+#include "toy_problem.h"
 
 #include <cmath>
 #include <sstream>
@@ -30,7 +31,7 @@ namespace
 {
   // r(x, y) = (x - 1, y + 8 x^2); the "tangent" returns dv = -r/2 in x and
   // nothing in y: a descent direction for the first equation only.
-  class TrapSystem : public solver::NonlinearSystem
+  class TrapSystem : public test::ToyProblem
   {
   public:
     explicit TrapSystem(const dealii::IndexSet &owned)
@@ -58,7 +59,6 @@ namespace
       dv.compress(dealii::VectorOperation::insert);
       return 1;
     }
-    bool contact_set_changed() override { return false; }
 
     unsigned int assemblies = 0, residual_assemblies = 0;
 
@@ -76,7 +76,7 @@ namespace
 
   // Body r(x, w) = x - w, extra rho(x, w) = w - 1, from (0, 0): the body is
   // in equilibrium, rho = -1; Newton: dw = 1, dx = 1, exact at alpha = 1.
-  class ExtraUnknownSystem : public solver::NonlinearSystem
+  class ExtraUnknownSystem : public test::ToyProblem
   {
   public:
     explicit ExtraUnknownSystem(const dealii::IndexSet &owned)
@@ -109,7 +109,6 @@ namespace
     void   accept_step() override { w = w_trial; }
     double extra_residual() const override { return std::abs(rho()); }
     double extra_residual_norm() const override { return std::abs(rho()); }
-    bool   contact_set_changed() override { return false; }
 
     double w = 0, w_trial = 0;
 
@@ -119,7 +118,7 @@ namespace
     VectorType r;
   };
   // r(x) = x + x^3 - 10 with its exact Newton step.
-  class CubicSystem : public solver::NonlinearSystem
+  class CubicSystem : public test::ToyProblem
   {
   public:
     explicit CubicSystem(const dealii::IndexSet &owned)
@@ -143,7 +142,6 @@ namespace
       dv.compress(dealii::VectorOperation::insert);
       return 1;
     }
-    bool contact_set_changed() override { return false; }
 
   private:
     double     x = 0;
@@ -156,14 +154,14 @@ int main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   dealii::IndexSet                         owned(2);
   owned.add_range(0, 2);
-  TrapSystem                          system(owned);
-  solver::NonlinearSystem::VectorType v(owned, MPI_COMM_WORLD);
+  TrapSystem                   system(owned);
+  test::ToyProblem::VectorType v(owned, MPI_COMM_WORLD);
 
   parameters::NonlinearSolver p;
   p.max_iterations  = 1;
   p.picard_fallback = false;
   solver::NewtonSolver newton(p, dealii::ConditionalOStream(std::cout, false));
-  const auto           report = newton.solve(system, v);
+  const auto           report = system.solve_from(newton, v);
   std::cout << "accepted x = " << v[0] << ", |r| = " << report.residual
             << std::endl;
   test::close("|r| decreased from 1", report.residual < 1, 1, 0);
@@ -181,9 +179,9 @@ int main(int argc, char **argv)
 
   dealii::IndexSet one(1);
   one.add_range(0, 1);
-  ExtraUnknownSystem                  extra(one);
-  solver::NonlinearSystem::VectorType x(one, MPI_COMM_WORLD);
-  newton.solve(extra, x);
+  ExtraUnknownSystem           extra(one);
+  test::ToyProblem::VectorType x(one, MPI_COMM_WORLD);
+  extra.solve_from(newton, x);
   std::cout << "extra unknown: x = " << x[0] << ", w = " << extra.w
             << std::endl;
   test::close("extra unknown: the whole Newton step", extra.w, 1, 1e-12);
@@ -203,14 +201,15 @@ int main(int argc, char **argv)
             q.correction_tolerance = tol;
             q.correction_measure   = measure;
             q.picard_fallback      = false;
-            CubicSystem                         cubic(one);
-            solver::NonlinearSystem::VectorType c(one, MPI_COMM_WORLD);
+            CubicSystem                  cubic(one);
+            test::ToyProblem::VectorType c(one, MPI_COMM_WORLD);
             c[0] = start;
             c.compress(dealii::VectorOperation::insert);
             const auto report =
-              solver::NewtonSolver(q,
-                                   dealii::ConditionalOStream(std::cout, false))
-                .solve(cubic, c);
+              cubic.solve_from(solver::NewtonSolver(
+                                 q,
+                                 dealii::ConditionalOStream(std::cout, false)),
+                               c);
             const unsigned int k =
               measure == parameters::CorrectionMeasure::contraction;
             iterations[k] = report.converged ? report.iterations : 1000;

@@ -15,6 +15,7 @@
 #include <formsolve/solver/newton_solver.h>
 
 #include "check.h"
+#include "toy_problem.h"
 
 #include <cmath>
 
@@ -22,7 +23,7 @@ using namespace formsolve;
 
 namespace
 {
-  class ScriptedQuadratic : public solver::NonlinearSystem
+  class ScriptedQuadratic : public test::ToyProblem
   {
   public:
     explicit ScriptedQuadratic(const dealii::IndexSet &owned)
@@ -62,7 +63,6 @@ namespace
     {
       return r * dv;
     }
-    bool contact_set_changed() override { return false; }
 
     double x[2] = {0, 0};
 
@@ -92,13 +92,13 @@ namespace
     p.picard_fallback    = false;
     p.line_search_memory = memory;
     p.max_iterations     = iterations;
-    ScriptedQuadratic                   system(two);
-    solver::NonlinearSystem::VectorType v(two, MPI_COMM_WORLD);
+    ScriptedQuadratic            system(two);
+    test::ToyProblem::VectorType v(two, MPI_COMM_WORLD);
     v[0] = 1;
     v[1] = 0.049;
     v.compress(dealii::VectorOperation::insert);
     const dealii::ConditionalOStream quiet(std::cout, false);
-    const auto report = solver::NewtonSolver(p, quiet).solve(system, v);
+    const auto report = system.solve_from(solver::NewtonSolver(p, quiet), v);
     x                 = v[0];
     y                 = v[1];
     std::cout << "memory " << memory << ", " << report.iterations

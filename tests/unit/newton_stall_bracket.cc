@@ -19,6 +19,7 @@
 #include <formsolve/solver/newton_solver.h>
 
 #include "check.h"
+#include "toy_problem.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +28,7 @@ using namespace formsolve;
 
 namespace
 {
-  class ScalarSystem : public solver::NonlinearSystem
+  class ScalarSystem : public test::ToyProblem
   {
   public:
     explicit ScalarSystem(const dealii::IndexSet &owned)
@@ -54,7 +55,6 @@ namespace
     {
       return r * dv;
     }
-    bool contact_set_changed() override { return false; }
 
     unsigned int exact_assemblies = 0;
 
@@ -117,9 +117,9 @@ int main(int argc, char **argv)
 
   {
     p.max_iterations = 1;
-    ClosingContact                      system(one);
-    solver::NonlinearSystem::VectorType v(one, MPI_COMM_WORLD);
-    const auto report = solver::NewtonSolver(p, quiet).solve(system, v);
+    ClosingContact               system(one);
+    test::ToyProblem::VectorType v(one, MPI_COMM_WORLD);
+    const auto report = system.solve_from(solver::NewtonSolver(p, quiet), v);
     std::cout << "closing contact: x = " << v[0]
               << ", |r| = " << report.residual << std::endl;
     test::close("closing contact: |g| at most half of |g0|",
@@ -130,9 +130,9 @@ int main(int argc, char **argv)
   }
   {
     p.max_iterations = 1;
-    NoDescent                           system(one);
-    solver::NonlinearSystem::VectorType v(one, MPI_COMM_WORLD);
-    auto report = solver::NewtonSolver(p, quiet).solve(system, v);
+    NoDescent                    system(one);
+    test::ToyProblem::VectorType v(one, MPI_COMM_WORLD);
+    auto report = system.solve_from(solver::NewtonSolver(p, quiet), v);
     std::cout << "no descent, one iteration: x = " << v[0]
               << ", |r| = " << report.residual << std::endl;
     test::close("no descent: the iterate stays", v[0], 0, 0);
@@ -144,9 +144,9 @@ int main(int argc, char **argv)
                 0);
 
     p.max_iterations = 10;
-    NoDescent                           again(one);
-    solver::NonlinearSystem::VectorType w(one, MPI_COMM_WORLD);
-    report = solver::NewtonSolver(p, quiet).solve(again, w);
+    NoDescent                    again(one);
+    test::ToyProblem::VectorType w(one, MPI_COMM_WORLD);
+    report = again.solve_from(solver::NewtonSolver(p, quiet), w);
     std::cout << "no descent: " << report.iterations
               << " iterations, x = " << w[0] << std::endl;
     test::close("no descent: converged with the exact direction",

@@ -25,7 +25,7 @@ namespace formsolve
   namespace solver
   {
     template <int dim>
-    class FormingSystem : public NonlinearSystem
+    class FormingSystem : public NonlinearProblem
     {
     public:
       FormingSystem(const parameters::Run         &prm,
@@ -39,7 +39,7 @@ namespace formsolve
       /// A step of @p dt begins (statistics of the step are reset).
       void begin_step(const double dt);
       /// A Newton solve of the step begins, from the state's velocity and
-      /// holder velocity.
+      /// holder velocity: the state's velocity is the iterate.
       void begin_solve();
       /// The solve has converged: the strategy sees the body system of the
       /// converged iterate (contact::PenaltyStrategy::converged).
@@ -77,32 +77,44 @@ namespace formsolve
         return linear_solver ? linear_solver->factor_entries() : 0.;
       }
 
-      // NonlinearSystem
-      double assemble(const VectorType &v, const bool newton) override;
-      double assemble_residual(const VectorType &v) override;
-      double assemble_deferred(const VectorType &v, const bool newton) override;
-      double force_scale() const override { return f_scale; }
-      double directional_derivative(const VectorType &dv) const override;
-      unsigned int solve(VectorType &dv) override;
-      void         set_linear_tolerance(const double tolerance) override
-      {
-        linear_solver->set_forcing(tolerance);
-      }
-      bool        contact_set_changed() override;
-      double      update_penalty() override;
-      double      correct_penalty() override;
-      std::string iteration_info() const override;
-      void        set_step_length(const double alpha) override;
-      void        accept_step() override;
-      /// The tangent of eq. 4 (doc/theory.md) at the accepted iterate, the
-      /// trials of the stress-velocity tangent forgotten (a rejected line
-      /// search).
-      double assemble_exact(const VectorType &v) override;
-      double extra_residual() const override;
-      double extra_residual_norm() const override;
-      double extra_correction() const override;
+      // NonlinearProblem
+      Evaluation  evaluate(const double        alpha,
+                           const Linearisation kind,
+                           const bool          tangent_now) override;
+      Direction   solve(const double tolerance) override;
+      Accepted    accept() override;
+      bool        tighten(Evaluation &evaluation) override;
+      std::string info() const override { return iteration_info(); }
 
     private:
+      /// Contact search, body and contact terms at @p v, with the tangent
+      /// (counted); assemble_deferred(): the residual now, the tangent when
+      /// it is needed (complete_tangent()).
+      double assemble(const VectorType &v, const bool newton);
+      double assemble_deferred(const VectorType &v, const bool newton);
+      /// The tangent of eq. 4 (doc/theory.md) at @p v, the trials of the
+      /// stress-velocity tangent forgotten (a rejected line search).
+      double assemble_exact(const VectorType &v);
+      /// K dv = -r with the last tangent (bordered by the holder's equation).
+      unsigned int solve_direction(VectorType &dv);
+      double       directional_derivative(const VectorType &dv) const;
+      /// Whether the contact set changed since the last call.
+      bool contact_set_changed();
+      /// At an accepted iterate: new adaptive factors from its body system;
+      /// -1 if nothing changed, else the new |r|.
+      double update_penalty();
+      /// The strict check near convergence: -1 or the new |r|.
+      double      correct_penalty();
+      std::string iteration_info() const;
+      /// The holder's trial velocity at step length @p alpha.
+      void set_step_length(const double alpha);
+      void accept_step();
+      /// The norms of the last evaluation with main residual @p r.
+      Evaluation norms(const double r) const;
+      double     extra_residual() const;
+      double     extra_residual_norm() const;
+      double     extra_correction() const;
+
       /// The contact search at velocity @p v with the holder at axial
       /// velocity @p w (under force control): the state's contact set.
       void find_pairs(const VectorType &v, const double w);
@@ -130,6 +142,11 @@ namespace formsolve
       /// last search (closed, opened; summed over ranks).
       void count_changes();
       bool holder_controlled() const { return state.holder.force_control; }
+
+      /// The iterate (the state's velocity), its last direction and trial.
+      VectorType *iterate = nullptr;
+      VectorType  direction, trial;
+      Evaluation  last_evaluation;
 
       const parameters::Run         &prm;
       state::State<dim>             &state;

@@ -50,7 +50,7 @@ namespace formsolve
       /// eq. 5a). Cells left alone get their c back.
       void exchange_volume_offsets(const dealii::DoFHandler<dim> &dof_handler,
                                    const dealii::Mapping<dim>    &mapping,
-                                   HistoryStorage<dim>           &history) const;
+                                   HistoryStorage<dim> &history) const;
 
     private:
       const material::RigidViscoplastic &material;
