@@ -39,8 +39,8 @@ namespace formsolve
                             const double                       rel,
                             const bool                         tight)
     {
-      return tight ? 0. :
-                     std::min(0.1,
+      return tight ? 0.
+                   : std::min(0.1,
                               std::max(p.forcing * rel,
                                        0.5 * p.residual_tolerance /
                                          std::max(rel, 1e-300)));
@@ -86,8 +86,8 @@ namespace formsolve
       // smooth. If that stalls too: direct iterations, then Newton again.
       r.retry      = !r.rejected && stalled && !last_stalled;
       last_stalled = stalled && !r.rejected;
-      r.fallback   = !r.rejected && !r.retry && stalled && newton_next &&
-                   picard_fallback;
+      r.fallback =
+        !r.rejected && !r.retry && stalled && newton_next && picard_fallback;
       return r;
     }
   } // namespace solver

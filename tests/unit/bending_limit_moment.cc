@@ -134,7 +134,7 @@ namespace
     {
       return residual * w;
     }
-    unsigned int solve(VectorType &dv) override
+    unsigned int linear_solve(VectorType &dv) override
     {
       VectorType rhs(residual);
       rhs *= -1.;

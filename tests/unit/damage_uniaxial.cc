@@ -114,7 +114,7 @@ namespace
     {
       return residual * dv;
     }
-    unsigned int solve(VectorType &dv) override
+    unsigned int linear_solve(VectorType &dv) override
     {
       VectorType rhs(residual);
       rhs *= -1.;

@@ -39,7 +39,7 @@ namespace
       return r * dv;
     }
     void set_linear_tolerance(const double t) override { tolerance = t; }
-    unsigned int solve(VectorType &dv) override
+    unsigned int linear_solve(VectorType &dv) override
     {
       tolerances.push_back(tolerance);
       dv[0] = tolerance > 0 ? r[0] : -r[0];

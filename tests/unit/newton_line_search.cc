@@ -40,19 +40,19 @@ namespace
     double assemble(const VectorType &v, const bool /*newton*/) override
     {
       ++assemblies;
-      return evaluate(v);
+      return compute(v);
     }
     double assemble_residual(const VectorType &v) override
     {
       ++residual_assemblies;
-      return evaluate(v);
+      return compute(v);
     }
     double force_scale() const override { return 1; }
     double directional_derivative(const VectorType &dv) const override
     {
       return r * dv;
     }
-    unsigned int solve(VectorType &dv) override
+    unsigned int linear_solve(VectorType &dv) override
     {
       dv    = 0;
       dv[0] = -0.5 * r[0];
@@ -63,7 +63,7 @@ namespace
     unsigned int assemblies = 0, residual_assemblies = 0;
 
   private:
-    double evaluate(const VectorType &v)
+    double compute(const VectorType &v)
     {
       const double x = v[0], y = v[1];
       r[0] = x - 1;
@@ -94,7 +94,7 @@ namespace
     {
       return r * dv + dw * rho();
     }
-    unsigned int solve(VectorType &dv) override
+    unsigned int linear_solve(VectorType &dv) override
     {
       dw    = -rho();
       dv    = 0;
@@ -136,7 +136,7 @@ namespace
     {
       return r * dv;
     }
-    unsigned int solve(VectorType &dv) override
+    unsigned int linear_solve(VectorType &dv) override
     {
       dv[0] = -r[0] / (1 + 3 * x * x);
       dv.compress(dealii::VectorOperation::insert);

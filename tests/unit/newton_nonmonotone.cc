@@ -31,13 +31,13 @@ namespace
     {}
     double assemble(const VectorType &v, const bool /*newton*/) override
     {
-      return evaluate(v);
+      return compute(v);
     }
     double assemble_residual(const VectorType &v) override
     {
-      return evaluate(v);
+      return compute(v);
     }
-    unsigned int solve(VectorType &dv) override
+    unsigned int linear_solve(VectorType &dv) override
     {
       ++solves;
       if (solves == 1)
@@ -67,7 +67,7 @@ namespace
     double x[2] = {0, 0};
 
   private:
-    double evaluate(const VectorType &v)
+    double compute(const VectorType &v)
     {
       x[0] = v[0];
       x[1] = v[1];

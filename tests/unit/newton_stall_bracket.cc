@@ -37,18 +37,18 @@ namespace
     double assemble(const VectorType &v, const bool /*newton*/) override
     {
       exact = false;
-      return evaluate(v);
+      return compute(v);
     }
     double assemble_exact(const VectorType &v) override
     {
       ++exact_assemblies;
-      const double norm = evaluate(v);
+      const double norm = compute(v);
       exact             = true;
       return norm;
     }
     double assemble_residual(const VectorType &v) override
     {
-      return evaluate(v);
+      return compute(v);
     }
     double force_scale() const override { return 1; }
     double directional_derivative(const VectorType &dv) const override
@@ -60,7 +60,7 @@ namespace
 
   protected:
     virtual double residual(const double x) const = 0;
-    double         evaluate(const VectorType &v)
+    double         compute(const VectorType &v)
     {
       x    = v[0];
       r[0] = residual(x);
@@ -76,7 +76,7 @@ namespace
   {
   public:
     using ScalarSystem::ScalarSystem;
-    unsigned int solve(VectorType &dv) override
+    unsigned int linear_solve(VectorType &dv) override
     {
       dv[0] = -r[0]; // the closing pair is not in the tangent
       dv.compress(dealii::VectorOperation::insert);
@@ -94,7 +94,7 @@ namespace
   {
   public:
     using ScalarSystem::ScalarSystem;
-    unsigned int solve(VectorType &dv) override
+    unsigned int linear_solve(VectorType &dv) override
     {
       dv[0] = exact ? r[0] : -r[0];
       dv.compress(dealii::VectorOperation::insert);

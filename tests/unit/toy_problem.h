@@ -34,7 +34,7 @@ namespace test
     }
     virtual double       force_scale() const { return 1; }
     virtual double       directional_derivative(const VectorType &dv) const = 0;
-    virtual unsigned int solve(VectorType &dv)                               = 0;
+    virtual unsigned int linear_solve(VectorType &dv)                       = 0;
     virtual void         set_linear_tolerance(const double) {}
     /// Extra unknowns follow the trial at step length @p alpha.
     virtual void   set_step_length(const double) {}
@@ -67,12 +67,12 @@ namespace test
       trial = *x;
       trial.add(alpha, direction);
       set_step_length(alpha);
-      const double r = kind == Linearisation::exact ? assemble_exact(trial) :
-                       tangent_now ?
-                                                      assemble(trial, kind == Linearisation::newton) :
-                                                      assemble_residual(trial);
-      last       = norms(r);
-      last.slope = directional_derivative(direction);
+      const double r = kind == Linearisation::exact ? assemble_exact(trial)
+                       : tangent_now
+                         ? assemble(trial, kind == Linearisation::newton)
+                         : assemble_residual(trial);
+      last           = norms(r);
+      last.slope     = directional_derivative(direction);
       return last;
     }
 
@@ -81,7 +81,7 @@ namespace test
       set_linear_tolerance(tolerance);
       Direction d;
       direction           = 0;
-      d.linear_iterations = solve(direction);
+      d.linear_iterations = linear_solve(direction);
       d.norm              = direction.l2_norm();
       VectorType full(*x);
       full.add(1., direction);

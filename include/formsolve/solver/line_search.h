@@ -20,7 +20,7 @@ namespace formsolve
       /// The merit of a new iterate.
       void push(const double merit);
       /// Forget the earlier iterates (the equations changed).
-      void reset(const double merit);
+      void   reset(const double merit);
       double reference() const;
 
     private:

@@ -21,9 +21,8 @@ namespace formsolve
       /// The factor on a correction of @p step (main unknowns, absolute) and
       /// @p extra_step (extra ones, relative); @p full: a full step with the
       /// active set unchanged.
-      double factor(const double step,
-                    const double extra_step,
-                    const bool   full) const;
+      double
+      factor(const double step, const double extra_step, const bool full) const;
       /// The correction just taken.
       void record(const double step, const double extra_step, const bool full);
       /// The equations changed: the next correction contracts nothing.
@@ -85,9 +84,8 @@ namespace formsolve
       /// @p inexact: the linear solves may stop early (Forcing > 0).
       StallPolicy(const bool inexact, const bool picard_fallback);
 
-      StallResponse respond(const bool stalled,
-                            const bool descends,
-                            const bool newton_next);
+      StallResponse
+      respond(const bool stalled, const bool descends, const bool newton_next);
       /// Whether linear solves go to the solver's own tolerance: always
       /// without forcing, and once an inexact direction has failed.
       bool tight() const { return tight_solves; }

@@ -80,8 +80,9 @@ namespace formsolve
       /// @p kind is assembled with the residual (it is expected to give the
       /// next direction); else only when solve() or the problem itself asks
       /// for it, linearised as the last tangent was.
-      virtual Evaluation
-      evaluate(const double alpha, const Linearisation kind, const bool tangent_now) = 0;
+      virtual Evaluation evaluate(const double        alpha,
+                                  const Linearisation kind,
+                                  const bool          tangent_now) = 0;
 
       /// The direction dx from the current iterate: K dx = -r, solved to the
       /// relative residual @p tolerance where the linear solver iterates (0:

@@ -8,7 +8,7 @@
 
 #include <formsolve/contact/contact_statistics.h>
 #include <formsolve/contact/penalty_strategy.h>
-#include <formsolve/solver/forming_system.h>
+#include <formsolve/solver/forming_problem.h>
 #include <formsolve/solver/newton_solver.h>
 #include <formsolve/solver/step_control.h>
 #include <formsolve/state/state.h>
@@ -68,7 +68,7 @@ namespace formsolve
       /// Forces and penetrations of the last converged step.
       contact::ContactStatistics<dim> statistics(const double dt) const;
 
-      const FormingSystem<dim> &forming_system() const { return system; }
+      const FormingProblem<dim> &forming_system() const { return system; }
       std::string strategy_name() const { return strategy->name(); }
       /// The time step the next step starts with (step control).
       double time_step() const { return control.time_step(); }
@@ -78,7 +78,7 @@ namespace formsolve
       const parameters::Run                         &prm;
       state::State<dim>                             &state;
       std::unique_ptr<contact::PenaltyStrategy<dim>> strategy;
-      FormingSystem<dim>                             system;
+      FormingProblem<dim>                            system;
       NewtonSolver                                   newton;
       StepControl                                    control;
       dealii::ConditionalOStream                     log;

@@ -4,7 +4,9 @@
 // bordered system
 //   [K   b] [dv]     [r  ]      b = dr/dw,  c = drho/dv,  e = drho/dw
 //   [c^T e] [dw] = - [rho],
-// by elimination with two solves of K (doc/theory.md, section 6a).
+// by elimination with two solves of K (doc/theory.md, section 6a). This class
+// is that equation and its unknown: the coupling terms, and w as it is
+// accepted, tried along a line search and corrected.
 #pragma once
 
 #include <deal.II/lac/affine_constraints.h>
@@ -20,13 +22,26 @@ namespace formsolve
   namespace solver
   {
     template <int dim>
-    class HolderCoupling
+    class HolderEquation
     {
     public:
       using VectorType = dealii::TrilinosWrappers::MPI::Vector;
 
       /// Vectors on the locally owned DoFs of the current mesh.
       void reinit(const dealii::IndexSet &owned, const MPI_Comm comm);
+
+      /// A solve starts from the holder velocity @p w (mm/s).
+      void begin_solve(const double w);
+      /// The trial at step length @p alpha along the last correction.
+      void set_step_length(const double alpha) { w_trial = w + alpha * dw; }
+      /// The trial becomes the iterate.
+      void accept() { w = w_trial; }
+      /// The accepted and the trial velocity (mm/s).
+      double velocity() const { return w; }
+      double trial_velocity() const { return w_trial; }
+      /// The correction of the next line search (mm/s).
+      void   set_correction(const double d) { dw = d; }
+      double last_correction() const { return dw; }
 
       /// Coupling terms of the holder pairs at the current iterate.
       /// @p target: the set force on the modelled part (N).
@@ -57,6 +72,7 @@ namespace formsolve
     private:
       VectorType b, c;
       double     e = 0, rho = 0;
+      double     w = 0, w_trial = 0, dw = 0; // velocity (mm/s)
       bool       has_contact = false;
       double     nearest_gap = 0, nearest_nz = 1; // nearest inactive pair
     };

@@ -3,7 +3,7 @@
 
 #include <formsolve/contact/contact_law.h>
 #include <formsolve/model/dimensions.h>
-#include <formsolve/solver/holder_coupling.h>
+#include <formsolve/solver/holder_equation.h>
 
 #include <limits>
 
@@ -14,15 +14,22 @@ namespace formsolve
     using namespace dealii;
 
     template <int dim>
-    void HolderCoupling<dim>::reinit(const IndexSet &owned, const MPI_Comm comm)
+    void HolderEquation<dim>::reinit(const IndexSet &owned, const MPI_Comm comm)
     {
       b.reinit(owned, comm);
       c.reinit(owned, comm);
     }
 
     template <int dim>
+    void HolderEquation<dim>::begin_solve(const double velocity)
+    {
+      w = w_trial = velocity;
+      dw          = 0;
+    }
+
+    template <int dim>
     void
-    HolderCoupling<dim>::assemble(const contact::ContactSet<dim>  &set,
+    HolderEquation<dim>::assemble(const contact::ContactSet<dim>  &set,
                                   const std::vector<double>       &epsilon,
                                   const tools::ToolSet<dim>       &tools,
                                   const double                     v0,
@@ -91,7 +98,7 @@ namespace formsolve
     }
 
     template <int dim>
-    double HolderCoupling<dim>::correction(const VectorType &y,
+    double HolderEquation<dim>::correction(const VectorType &y,
                                            const VectorType &z) const
     {
       // Schur complement e - c^T K^-1 b >= 0: the stiffness the holder
@@ -104,7 +111,7 @@ namespace formsolve
     }
 
     template <int dim>
-    double HolderCoupling<dim>::closing_correction(const double depth,
+    double HolderEquation<dim>::closing_correction(const double depth,
                                                    const double dt) const
     {
       if (nearest_gap == std::numeric_limits<double>::max())
@@ -115,7 +122,7 @@ namespace formsolve
       return -(nearest_gap + depth) / (-nearest_nz * dt);
     }
 
-#define INSTANTIATE(dim) template class HolderCoupling<dim>;
+#define INSTANTIATE(dim) template class HolderEquation<dim>;
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace solver

@@ -1,0 +1,405 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <formsolve/model/dimensions.h>
+#include <formsolve/solver/forming_problem.h>
+#include <formsolve/solver/null_space.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    using namespace dealii;
+
+    template <int dim>
+    FormingProblem<dim>::FormingProblem(
+      const parameters::Run         &prm,
+      state::State<dim>             &state,
+      const Assembler<dim>          &assembler,
+      contact::PenaltyStrategy<dim> &strategy,
+      TimerOutput                   &timer)
+        : prm(prm)
+        , state(state)
+        , timer(timer)
+        , body(assembler, prm.nonlinear)
+        , contact(prm, state, strategy, timer)
+        , factor_reuse(prm.linear.reuse_velocity_change)
+    {}
+
+    template <int dim>
+    void FormingProblem<dim>::reinit()
+    {
+      // The direct solver refers to the matrix: release it first. The old
+      // system goes before the new one is built, so that the two never
+      // coexist (a remeshing, the coarse start).
+      linear_solver.reset();
+      matrix.clear();
+      matrix_has_contact = false;
+      point.tangent      = true;
+      body.clear();
+      {
+        DynamicSparsityPattern dsp(state.relevant);
+        // ML's line detection needs every ghost node with all its
+        // components in the column map ("Incomplete ghost block detected"
+        // on 2 ranks otherwise): keep the (zero) couplings of constrained
+        // DoFs.
+        DoFTools::make_sparsity_pattern(
+          state.dof_handler,
+          dsp,
+          state.constraints,
+          prm.linear.type == parameters::LinearSolverType::iterative);
+        SparsityTools::distribute_sparsity_pattern(dsp,
+                                                   state.owned,
+                                                   state.comm,
+                                                   state.relevant);
+        matrix.reinit(state.owned, state.owned, dsp, state.comm);
+      } // the pattern (0.4 kB/DoF) is freed before the cell map is built
+      body.reinit(state, matrix);
+      for (auto *v : {&residual, &body_residual, &direction, &point.velocity})
+        v->reinit(state.owned, state.comm);
+      ghost.reinit(state.owned, state.relevant, state.comm);
+      factor_reuse.reinit(state.owned, state.comm);
+      holder.reinit(state.owned, state.comm);
+      contact.reinit();
+
+      std::vector<std::vector<bool>> modes;
+      DoFTools::extract_constant_modes(state.dof_handler,
+                                       ComponentMask(dim, true),
+                                       modes);
+      linear_solver = std::make_unique<LinearSolver>(prm.linear,
+                                                     modes,
+                                                     prm.symmetric_tangent());
+      linear_solver->time_phases(timer);
+    }
+
+    template <int dim>
+    void FormingProblem<dim>::begin_step(const double step_dt)
+    {
+      dt = step_dt;
+      body.begin_step();
+      point.tangent   = true;
+      penalty_updates = 0;
+      corrections     = 0;
+      step_max_linear = 0;
+      step_condition  = 0;
+    }
+
+    template <int dim>
+    void FormingProblem<dim>::begin_solve()
+    {
+      contact.begin_solve();
+      factor_reuse.begin_solve();
+      holder.begin_solve(state.holder.velocity);
+      iterate   = &state.velocity;
+      direction = 0;
+    }
+
+    template <int dim>
+    void FormingProblem<dim>::predict(VectorType &v)
+    {
+      if (prm.nonlinear.predictor == parameters::Predictor::keep_contact)
+        contact.predict(v, ghost, state.holder.velocity, dt);
+    }
+
+    template <int dim>
+    double FormingProblem<dim>::assemble(const VectorType   &v,
+                                         const Linearisation kind,
+                                         const bool          with_tangent)
+    {
+      n_matrix_assemblies += with_tangent;
+      const bool accepted = point.accepted && !point.tangent;
+      point.kind          = kind;
+      point.tangent       = with_tangent;
+      ghost               = v;
+      contact.search(ghost, holder.trial_velocity(), dt);
+      {
+        // Separate sections: the cost per cell of each kind is measured
+        // (doc/convergence.md).
+        TimerOutput::Scope t(timer,
+                             with_tangent ? "assembly: body, tangent" :
+                                            "assembly: body, residual only");
+        MatrixType *K = with_tangent ? &matrix : nullptr;
+        f_scale = accepted ?
+                    body.evaluate_accepted(state, ghost, dt, kind, K, residual) :
+                    body.evaluate(state, ghost, dt, kind, K, residual);
+      }
+      // Factors: an adaptive strategy reads the body system (line-search
+      // trials keep the factors of the iterate, and are estimated here only
+      // when there are no factors for these pairs yet); others estimate at
+      // every evaluation.
+      bool estimate = !contact.reads_body_system();
+      if (contact.reads_body_system() && with_tangent)
+        {
+          body_residual = residual;
+          estimate      = !contact.has_factors();
+        }
+      if (estimate)
+        contact.estimate(residual, matrix, dt, predictor());
+      if (with_tangent)
+        factor_reuse.assembled_at(v);
+      add_contact_terms(with_tangent);
+      return residual.l2_norm();
+    }
+
+    template <int dim>
+    void FormingProblem<dim>::complete_tangent()
+    {
+      // The stress-velocity tangent of a point accepted since is linearised
+      // about the iterate before it, as in an assembly before the
+      // acceptance (BodyOperator::evaluate_accepted).
+      if (!point.tangent)
+        assemble(point.velocity, point.kind, true);
+    }
+
+    template <int dim>
+    void FormingProblem<dim>::add_contact_terms(const bool with_tangent)
+    {
+      contact.add(with_tangent ? &matrix : nullptr,
+                  &residual,
+                  1.,
+                  dt,
+                  newton(point.kind));
+      if (with_tangent)
+        matrix_has_contact = true;
+      if (holder_controlled())
+        holder.assemble(state.contact_set,
+                        contact.factors(),
+                        state.tools,
+                        prm.contact.regularisation_velocity,
+                        dt,
+                        newton(point.kind),
+                        state.constraints,
+                        state.holder.target);
+    }
+
+    template <int dim>
+    void FormingProblem<dim>::remove_contact_stiffness()
+    {
+      // The matrix holds K_b + K_c of the last assembly: the pairs, factors,
+      // tools and linearisation it was made with are still those of the
+      // state (no search and no estimate since).
+      Assert(matrix_has_contact, ExcInternalError());
+      contact.add(&matrix, nullptr, -1., dt, newton(point.kind));
+      matrix_has_contact = false;
+    }
+
+    template <int dim>
+    double FormingProblem<dim>::update_penalty()
+    {
+      if (!contact.reads_body_system())
+        return -1;
+      if (!point.tangent)
+        {
+          // Held factors: the residual of the point is already this one.
+          if (contact.holds_factors(predictor()))
+            return -1;
+          complete_tangent();
+        }
+      remove_contact_stiffness();
+      contact.estimate(body_residual, matrix, dt, predictor());
+      // Newton estimates here once per accepted iterate, the predictor first.
+      ++penalty_updates;
+      residual = body_residual;
+      // The copy leaves the vector in 'insert' mode; settle it on every rank
+      // now, before ranks with and without contact pairs start adding.
+      residual.compress(VectorOperation::insert);
+      add_contact_terms(true);
+      return residual.l2_norm();
+    }
+
+    template <int dim>
+    void FormingProblem<dim>::end_solve()
+    {
+      if (!contact.reads_body_system())
+        return;
+      if (!point.tangent)
+        {
+          // The matrix is of the iterate before; the next solve assembles
+          // anew, and only a strategy that reads it needs the tangent.
+          if (!contact.reads_converged_system())
+            return;
+          complete_tangent();
+        }
+      // The body tangent for the strategy; the next solve assembles anew.
+      remove_contact_stiffness();
+      contact.converged(body_residual, matrix, dt);
+    }
+
+    template <int dim>
+    Evaluation FormingProblem<dim>::evaluate(const double        alpha,
+                                             const Linearisation kind,
+                                             const bool          tangent_now)
+    {
+      point.velocity = *iterate;
+      point.velocity.add(alpha, direction);
+      point.accepted = false;
+      holder.set_step_length(alpha);
+      const double r        = assemble(point.velocity,
+                                kind,
+                                tangent_now || kind == Linearisation::exact);
+      last_evaluation       = norms(r);
+      last_evaluation.slope = directional_derivative(direction);
+      return last_evaluation;
+    }
+
+    template <int dim>
+    Direction FormingProblem<dim>::solve(const double tolerance)
+    {
+      linear_solver->set_forcing(tolerance);
+      Direction d;
+      direction           = 0;
+      d.linear_iterations = solve_direction(direction);
+      d.norm              = direction.l2_norm();
+      VectorType full(*iterate);
+      full.add(1., direction);
+      d.full_step_norm = full.l2_norm();
+      d.extra_relative = extra_correction();
+      d.slope          = directional_derivative(direction);
+      return d;
+    }
+
+    template <int dim>
+    Accepted FormingProblem<dim>::accept()
+    {
+      *iterate       = point.velocity;
+      point.accepted = true;
+      holder.accept();
+      body.accept(state.comm, prm.nonlinear.log_iterations);
+      Accepted     a;
+      const double r       = update_penalty();
+      a.evaluation         = norms(r >= 0 ? r : last_evaluation.residual);
+      a.active_set_changed = contact.changed();
+      a.norm               = iterate->l2_norm();
+      a.extra_relative     = extra_correction();
+      return a;
+    }
+
+    template <int dim>
+    bool FormingProblem<dim>::tighten(Evaluation &evaluation)
+    {
+      if (!contact.reads_body_system() || !contact.tighten())
+        return false;
+      complete_tangent();
+      evaluation = norms(update_penalty());
+      return true;
+    }
+
+    template <int dim>
+    unsigned int FormingProblem<dim>::solve_direction(VectorType &dv)
+    {
+      complete_tangent();
+      TimerOutput::Scope t(timer, "linear solve");
+      VectorType         rhs(residual);
+      rhs *= -1.;
+      const unsigned long factorised = linear_solver->factorisations();
+      if (linear_solver->needs_null_space())
+        linear_solver->set_null_space(rigid_body_modes(
+          state.mapping
+            ? static_cast<const Mapping<dim> &>(*state.mapping)
+            : static_cast<const Mapping<dim> &>(state.reference_mapping),
+          state.dof_handler,
+          state.owned));
+      // Bordered system (the holder under force control): the holder's
+      // column K z = b with the same factors, in the same solve. The first
+      // correction of a step comes from the secant tangent (dual reset),
+      // under which the sheet below the holder is 5-10x softer than in
+      // Newton's: the Schur complement (e - c^T K^-1 b) is then 2e-4 e, and
+      // dw about 100x the holder's speed. The holder keeps its velocity for
+      // that one correction (doc/theory.md section 6a), and K^-1 b is not
+      // needed.
+      const bool   bordered = holder_controlled() && holder.engaged() &&
+                            corrections > 0;
+      unsigned int its      = 0;
+      if (bordered)
+        {
+          VectorType z(state.owned, state.comm);
+          its = linear_solver->solve_pair(matrix,
+                                          dv,
+                                          rhs,
+                                          z,
+                                          holder.column(),
+                                          factor_reuse.may_reuse());
+          holder.set_correction(holder.correction(dv, z));
+          dv.add(-holder.last_correction(), z);
+        }
+      else
+        {
+          its = linear_solver->solve(matrix, dv, rhs, factor_reuse.may_reuse());
+          holder.set_correction(
+            holder_controlled() && !holder.engaged() ?
+              holder.closing_correction(state.tools.allowed_penetration(
+                                          state.tools.holder_index()),
+                                        dt) :
+              0.);
+        }
+      ++corrections;
+      if (linear_solver->factorisations() != factorised)
+        factor_reuse.factorised();
+      n_factorisations += linear_solver->factorisations() - factorised;
+      step_max_linear = std::max(step_max_linear, its);
+      step_condition =
+        std::max(step_condition, linear_solver->condition_estimate());
+      state.constraints.distribute(dv);
+      return its;
+    }
+
+    template <int dim>
+    double FormingProblem<dim>::extra_correction() const
+    {
+      return holder_controlled() ?
+               std::abs(holder.last_correction()) /
+                 std::max(std::abs(holder.velocity()),
+                          state.tools.punch_speed()) :
+               0.;
+    }
+
+    template <int dim>
+    Evaluation FormingProblem<dim>::norms(const double r) const
+    {
+      Evaluation e;
+      e.residual = r;
+      // rho is a force (N), as the nodal entries of r.
+      e.extra          = holder_controlled() ? std::abs(holder.residual()) : 0.;
+      e.extra_relative = holder_controlled() ? std::abs(holder.residual()) /
+                                                 state.holder.target :
+                                               0.;
+      e.scale          = f_scale;
+      return e;
+    }
+
+    template <int dim>
+    double
+    FormingProblem<dim>::directional_derivative(const VectorType &dv) const
+    {
+      return residual * dv + (holder_controlled() ?
+                                holder.last_correction() * holder.residual() :
+                                0.);
+    }
+
+    template <int dim>
+    std::string FormingProblem<dim>::info() const
+    {
+      std::ostringstream s;
+      s << contact.info();
+      if (body.stress_velocity() && prm.nonlinear.log_iterations)
+        {
+          const auto &c = body.rigid_counts();
+          s << "  rigid points: " << c[0] << " (+" << c[1] << "/-" << c[2]
+            << ")";
+        }
+      if (holder_controlled())
+        s << "  holder: w=" << holder.velocity()
+          << " mm/s, F-F_set=" << -holder.residual() << " N";
+      return s.str();
+    }
+
+#define INSTANTIATE(dim) template class FormingProblem<dim>;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace solver
+} // namespace formsolve
