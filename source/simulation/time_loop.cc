@@ -155,23 +155,11 @@ namespace formsolve
     }
 
     template <int dim>
-    RunSummary TimeLoop<dim>::run(const bool resume)
+    void TimeLoop<dim>::start(const bool resume, RunSummary &summary)
     {
-      using Clock      = std::chrono::steady_clock;
-      const auto start = Clock::now();
-      RunSummary summary;
-      // Wall time includes that of the run before a resume.
-      auto seconds = [&]() {
-        return summary.wall_before +
-               std::chrono::duration<double>(Clock::now() - start).count();
-      };
-
-      const Checkpoint<dim> checkpoint(prm.output.directory,
-                                       parameter_listing());
-      writer = std::make_unique<postprocess::VtuWriter<dim>>(prm.output);
       if (resume)
         {
-          const auto meta = checkpoint.load(state);
+          const auto meta = checkpoint->load(state);
           step_solver.reinit();
           restore_loop(meta, summary);
         }
@@ -203,57 +191,163 @@ namespace formsolve
               << ", punch travel " << state.tools.punch_travel() << " mm"
               << std::endl;
 
-      postprocess::HistoryWriter<dim> history(state,
-                                              resume ? int(state.step) : -1);
+      history =
+        std::make_unique<postprocess::HistoryWriter<dim>>(state,
+                                                          resume
+                                                            ? int(state.step)
+                                                            : -1);
       if (prm.refinement.enabled())
-        {
-          refinement_log = std::make_unique<postprocess::StatisticsTable>(
-            prm.output.directory + "/refinement.csv",
-            std::vector<std::string>{"step",
-                                     "punch_travel",
-                                     "cells_before",
-                                     "cells_after",
-                                     "dofs",
-                                     "flagged_refine",
-                                     "flagged_coarsen",
-                                     "volume_before",
-                                     "volume_after",
-                                     "strain_integral_before",
-                                     "strain_integral_after",
-                                     "damage_integral_before",
-                                     "damage_integral_after"},
-            Utilities::MPI::this_mpi_process(comm) == 0,
-            resume ? int(refinement_rows) : -1);
-          // Refine towards the radii before the first step, one level a pass.
-          if (!resume)
-            {
-              for (unsigned int pass = 0; pass < 8 && adapt(); ++pass)
-                {}
-              pcout << "adapted mesh: " << state.tria.n_global_active_cells()
-                    << " cells, " << state.dof_handler.n_dofs() << " DoFs"
-                    << std::endl;
-            }
-        }
+        start_refinement(resume);
       if (!resume && prm.output.interval > 0)
         write_output();
       if (!resume && state.step == 0 &&
           prm.nonlinear.first_step_start ==
             parameters::FirstStepStart::coarser_mesh)
-        start_from_coarser_mesh(summary, seconds);
+        start_from_coarser_mesh(summary);
+    }
 
-      auto save_checkpoint = [&]() {
-        TimerOutput::Scope t(timer, "checkpoint");
-        step_solver.release_factors();
-        summary.wall_time = seconds();
-        checkpoint.save(state, loop_metadata(summary));
-      };
+    template <int dim>
+    void TimeLoop<dim>::start_refinement(const bool resume)
+    {
+      refinement_log = std::make_unique<postprocess::StatisticsTable>(
+        prm.output.directory + "/refinement.csv",
+        std::vector<std::string>{"step",
+                                 "punch_travel",
+                                 "cells_before",
+                                 "cells_after",
+                                 "dofs",
+                                 "flagged_refine",
+                                 "flagged_coarsen",
+                                 "volume_before",
+                                 "volume_after",
+                                 "strain_integral_before",
+                                 "strain_integral_after",
+                                 "damage_integral_before",
+                                 "damage_integral_after"},
+        Utilities::MPI::this_mpi_process(comm) == 0,
+        resume ? int(refinement_rows) : -1);
+      if (resume)
+        return;
+      // Refine towards the radii before the first step, one level a pass.
+      for (unsigned int pass = 0; pass < 8 && adapt(); ++pass)
+        {}
+      pcout << "adapted mesh: " << state.tria.n_global_active_cells()
+            << " cells, " << state.dof_handler.n_dofs() << " DoFs" << std::endl;
+    }
 
-      postprocess::Progress progress;
-      progress.record(seconds(), state.tools.punch_travel());
-      summary.end_reason  = "the punch stroke was reached";
+    template <int dim>
+    void TimeLoop<dim>::save_checkpoint(RunSummary &summary)
+    {
+      TimerOutput::Scope t(timer, "checkpoint");
+      step_solver.release_factors();
+      summary.wall_time = seconds();
+      checkpoint->save(state, loop_metadata(summary));
+    }
+
+    template <int dim>
+    solver::StepReport TimeLoop<dim>::solve_step(RunSummary &summary)
+    {
       auto        &tools  = state.tools;
       const double stroke = tools.punch_stroke(), speed = tools.punch_speed();
-      while (tools.punch_travel() < stroke * (1 - 1e-12))
+      const double newton_start = seconds();
+      const auto   report =
+        step_solver.solve((stroke - tools.punch_travel()) / speed);
+      summary.newton_wall_time += seconds() - newton_start;
+      summary.newton_iterations += report.iterations;
+      summary.linear_iterations += report.linear_iterations;
+      summary.matrix_assemblies += report.matrix_assemblies;
+      summary.factorisations += report.factorisations;
+      summary.factorisation_memory_mb =
+        std::max(summary.factorisation_memory_mb,
+                 report.factorisation_memory_mb);
+      summary.factor_entries =
+        std::max(summary.factor_entries, report.factor_entries);
+      summary.cutbacks += report.cutbacks;
+      if (report.converged)
+        return report;
+      // The state is that of the last converged step again.
+      if (prm.output.interval > 0 && last_output_step != int(state.step))
+        write_output();
+      save_checkpoint(summary);
+      std::ostringstream s;
+      s << "step " << state.step + 1 << " (punch travel "
+        << tools.punch_travel() << " mm): " << report.failure
+        << " (|r|/|f| = " << report.residual << ") after " << report.cutbacks
+        << " time-step cut(s), at the minimum time step "
+           "(Time stepping/Minimum time step = "
+        << prm.time.minimum_time_step
+        << " s); results up to the previous step and a checkpoint are in "
+        << prm.output.directory;
+      AssertThrow(false, ExcMessage(s.str()));
+      return report;
+    }
+
+    template <int dim>
+    bool TimeLoop<dim>::record_step(const solver::StepReport &report,
+                                    RunSummary               &summary)
+    {
+      const auto stats = step_solver.statistics(report.dt);
+      {
+        TimerOutput::Scope t(timer, "state update");
+        state.advance(report.dt, history_update);
+      }
+      summary.steps = state.step;
+      summary.n_dofs =
+        std::max(summary.n_dofs, double(state.dof_handler.n_dofs()));
+      summary.dof_steps += state.dof_handler.n_dofs();
+      const double wall    = seconds();
+      const auto   forming = measure_forming();
+      history->write(state, report, stats, forming, wall);
+
+      const double travel = state.tools.punch_travel();
+      const double force  = prm.geometry.symmetry_factor() *
+                           stats.tool_force[state.tools.punch_index()][dim - 1];
+      if (force > summary.peak_punch_force)
+        {
+          summary.peak_punch_force  = force;
+          summary.peak_force_travel = stats.force_travel;
+        }
+      summary.max_penetration =
+        std::max(summary.max_penetration, stats.max_penetration);
+      const bool fractured = check_fracture(forming,
+                                            summary.last_damage,
+                                            summary.last_damage_travel,
+                                            summary);
+      summary.last_damage =
+        damage.deciding(forming.oyane.value, forming.cockcroft_latham.value);
+      summary.last_damage_travel = travel;
+      progress.record(wall, travel);
+      pcout << "step " << std::setw(4) << state.step << "  t=" << std::fixed
+            << std::setprecision(3) << state.time << " s  travel=" << travel
+            << " mm  F=" << std::setprecision(2) << force / 1000.
+            << " kN  newton=" << std::setw(2) << report.iterations
+            << (report.cutbacks > 0 ? "  cut=" + std::to_string(report.cutbacks)
+                                    : std::string())
+            << "  pen=" << std::scientific << std::setprecision(2)
+            << stats.max_penetration
+            << " mm  wall=" << postprocess::Progress::duration(wall)
+            << "  left~"
+            << postprocess::Progress::duration(
+                 progress.time_left(state.tools.punch_stroke()))
+            << std::defaultfloat << std::setprecision(6) << std::endl;
+      return fractured;
+    }
+
+    template <int dim>
+    RunSummary TimeLoop<dim>::run(const bool resume)
+    {
+      RunSummary summary;
+      start_time  = std::chrono::steady_clock::now();
+      wall_before = &summary.wall_before;
+      checkpoint  = std::make_unique<Checkpoint<dim>>(prm.output.directory,
+                                                     parameter_listing());
+      writer      = std::make_unique<postprocess::VtuWriter<dim>>(prm.output);
+      start(resume, summary);
+
+      progress.record(seconds(), state.tools.punch_travel());
+      summary.end_reason  = "the punch stroke was reached";
+      const double stroke = state.tools.punch_stroke();
+      while (state.tools.punch_travel() < stroke * (1 - 1e-12))
         {
           if (prm.refinement.enabled() && state.step > 0 &&
               state.step % prm.refinement.interval == 0)
@@ -265,93 +359,16 @@ namespace formsolve
             }
           app::injected_failure(state.step + 1);
           app::injected_kill("step", state.step + 1);
-          const double newton_start = seconds();
-          const auto   report =
-            step_solver.solve((stroke - tools.punch_travel()) / speed);
-          summary.newton_wall_time += seconds() - newton_start;
-          summary.newton_iterations += report.iterations;
-          summary.linear_iterations += report.linear_iterations;
-          summary.matrix_assemblies += report.matrix_assemblies;
-          summary.factorisations += report.factorisations;
-          summary.factorisation_memory_mb =
-            std::max(summary.factorisation_memory_mb,
-                     report.factorisation_memory_mb);
-          summary.factor_entries =
-            std::max(summary.factor_entries, report.factor_entries);
-          summary.cutbacks += report.cutbacks;
-          if (!report.converged)
-            {
-              // The state is that of the last converged step again.
-              if (prm.output.interval > 0 &&
-                  last_output_step != int(state.step))
-                write_output();
-              save_checkpoint();
-              std::ostringstream s;
-              s << "step " << state.step + 1 << " (punch travel "
-                << tools.punch_travel() << " mm): " << report.failure
-                << " (|r|/|f| = " << report.residual << ") after "
-                << report.cutbacks
-                << " time-step cut(s), at the minimum time step "
-                   "(Time stepping/Minimum time step = "
-                << prm.time.minimum_time_step
-                << " s); results up to the previous step and a checkpoint "
-                   "are in "
-                << prm.output.directory;
-              AssertThrow(false, ExcMessage(s.str()));
-            }
+          const auto report    = solve_step(summary);
+          const bool fractured = record_step(report, summary);
 
-          const auto stats = step_solver.statistics(report.dt);
-          {
-            TimerOutput::Scope t(timer, "state update");
-            state.advance(report.dt, history_update);
-          }
-          summary.steps = state.step;
-          summary.n_dofs =
-            std::max(summary.n_dofs, double(state.dof_handler.n_dofs()));
-          summary.dof_steps += state.dof_handler.n_dofs();
-          const double wall    = seconds();
-          const auto   forming = measure_forming();
-          history.write(state, report, stats, forming, wall);
-
-          const double travel = tools.punch_travel();
-          const double force  = prm.geometry.symmetry_factor() *
-                               stats.tool_force[tools.punch_index()][dim - 1];
-          if (force > summary.peak_punch_force)
-            {
-              summary.peak_punch_force  = force;
-              summary.peak_force_travel = stats.force_travel;
-            }
-          summary.max_penetration =
-            std::max(summary.max_penetration, stats.max_penetration);
-          const bool fractured       = check_fracture(forming,
-                                                summary.last_damage,
-                                                summary.last_damage_travel,
-                                                summary);
-          summary.last_damage        = damage.deciding(forming.oyane.value,
-                                                forming.cockcroft_latham.value);
-          summary.last_damage_travel = travel;
-          progress.record(wall, travel);
-          pcout << "step " << std::setw(4) << state.step << "  t=" << std::fixed
-                << std::setprecision(3) << state.time << " s  travel=" << travel
-                << " mm  F=" << std::setprecision(2) << force / 1000.
-                << " kN  newton=" << std::setw(2) << report.iterations
-                << (report.cutbacks > 0
-                      ? "  cut=" + std::to_string(report.cutbacks)
-                      : std::string())
-                << "  pen=" << std::scientific << std::setprecision(2)
-                << stats.max_penetration
-                << " mm  wall=" << postprocess::Progress::duration(wall)
-                << "  left~"
-                << postprocess::Progress::duration(progress.time_left(stroke))
-                << std::defaultfloat << std::setprecision(6) << std::endl;
-
-          const bool last = travel >= stroke * (1 - 1e-12);
+          const bool last = state.tools.punch_travel() >= stroke * (1 - 1e-12);
           if (prm.output.interval > 0 &&
               (state.step % prm.output.interval == 0 || last))
             write_output();
           if (prm.output.checkpoint_interval > 0 && !last &&
               state.step % prm.output.checkpoint_interval == 0)
-            save_checkpoint();
+            save_checkpoint(summary);
           if (fractured && prm.output.stop_at_fracture)
             {
               std::ostringstream s;
@@ -361,9 +378,16 @@ namespace formsolve
               break;
             }
         }
+      finish(summary);
+      return summary;
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::finish(RunSummary &summary)
+    {
       if (prm.output.interval > 0 && last_output_step != int(state.step))
         write_output();
-      save_checkpoint();
+      save_checkpoint(summary);
 
       summary.wall_time = seconds();
       sheet.measure(state, damage);
@@ -387,7 +411,6 @@ namespace formsolve
               << std::endl;
       timer.print_summary();
       make_report();
-      return summary;
     }
 
 #define INSTANTIATE(dim) template class TimeLoop<dim>;

@@ -11,9 +11,7 @@ namespace formsolve
     using namespace dealii;
 
     template <int dim>
-    void TimeLoop<dim>::start_from_coarser_mesh(
-      RunSummary                    &summary,
-      const std::function<double()> &seconds)
+    void TimeLoop<dim>::start_from_coarser_mesh(RunSummary &summary)
     {
       const double start = seconds();
       auto         r =
@@ -37,10 +35,8 @@ namespace formsolve
         pcout << "first step from rest: " << r.reason << std::endl;
     }
 
-#define INSTANTIATE(dim)                                \
-  template void TimeLoop<dim>::start_from_coarser_mesh( \
-    RunSummary &,                                       \
-    const std::function<double()> &);
+#define INSTANTIATE(dim) \
+  template void TimeLoop<dim>::start_from_coarser_mesh(RunSummary &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace simulation

@@ -10,7 +10,7 @@ namespace formsolve
     using namespace dealii;
 
     template <int dim>
-    BodyOperator<dim>::BodyOperator(const Assembler<dim>              &assembler,
+    BodyOperator<dim>::BodyOperator(const Assembler<dim> &assembler,
                                     const parameters::NonlinearSolver &prm)
         : assembler(assembler)
         , use_dual(prm.tangent == parameters::Tangent::stress_velocity)
@@ -51,9 +51,9 @@ namespace formsolve
                                      kind != Linearisation::secant,
                                      matrix,
                                      residual,
-                                     use_dual && kind != Linearisation::exact ?
-                                       &dual :
-                                       nullptr,
+                                     use_dual && kind != Linearisation::exact
+                                       ? &dual
+                                       : nullptr,
                                      &scatter);
     }
 
@@ -83,8 +83,12 @@ namespace formsolve
           // Rigid-plastic transitions: a category of hard steps
           // (doc/convergence.md).
           counts         = dual.rigid_transitions(assembler.cutoff_rate());
-          const int ierr = MPI_Allreduce(
-            MPI_IN_PLACE, counts.data(), 3, MPI_UNSIGNED, MPI_SUM, comm);
+          const int ierr = MPI_Allreduce(MPI_IN_PLACE,
+                                         counts.data(),
+                                         3,
+                                         MPI_UNSIGNED,
+                                         MPI_SUM,
+                                         comm);
           AssertThrowMPI(ierr);
         }
       dual.accept();

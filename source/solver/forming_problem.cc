@@ -17,12 +17,11 @@ namespace formsolve
     using namespace dealii;
 
     template <int dim>
-    FormingProblem<dim>::FormingProblem(
-      const parameters::Run         &prm,
-      state::State<dim>             &state,
-      const Assembler<dim>          &assembler,
-      contact::PenaltyStrategy<dim> &strategy,
-      TimerOutput                   &timer)
+    FormingProblem<dim>::FormingProblem(const parameters::Run &prm,
+                                        state::State<dim>     &state,
+                                        const Assembler<dim>  &assembler,
+                                        contact::PenaltyStrategy<dim> &strategy,
+                                        TimerOutput                   &timer)
         : prm(prm)
         , state(state)
         , timer(timer)
@@ -121,12 +120,12 @@ namespace formsolve
         // Separate sections: the cost per cell of each kind is measured
         // (doc/convergence.md).
         TimerOutput::Scope t(timer,
-                             with_tangent ? "assembly: body, tangent" :
-                                            "assembly: body, residual only");
-        MatrixType *K = with_tangent ? &matrix : nullptr;
-        f_scale = accepted ?
-                    body.evaluate_accepted(state, ghost, dt, kind, K, residual) :
-                    body.evaluate(state, ghost, dt, kind, K, residual);
+                             with_tangent ? "assembly: body, tangent"
+                                          : "assembly: body, residual only");
+        MatrixType        *K = with_tangent ? &matrix : nullptr;
+        f_scale =
+          accepted ? body.evaluate_accepted(state, ghost, dt, kind, K, residual)
+                   : body.evaluate(state, ghost, dt, kind, K, residual);
       }
       // Factors: an adaptive strategy reads the body system (line-search
       // trials keep the factors of the iterate, and are estimated here only
@@ -312,9 +311,9 @@ namespace formsolve
       // dw about 100x the holder's speed. The holder keeps its velocity for
       // that one correction (doc/theory.md section 6a), and K^-1 b is not
       // needed.
-      const bool   bordered = holder_controlled() && holder.engaged() &&
-                            corrections > 0;
-      unsigned int its      = 0;
+      const bool bordered =
+        holder_controlled() && holder.engaged() && corrections > 0;
+      unsigned int its = 0;
       if (bordered)
         {
           VectorType z(state.owned, state.comm);
@@ -331,11 +330,11 @@ namespace formsolve
         {
           its = linear_solver->solve(matrix, dv, rhs, factor_reuse.may_reuse());
           holder.set_correction(
-            holder_controlled() && !holder.engaged() ?
-              holder.closing_correction(state.tools.allowed_penetration(
-                                          state.tools.holder_index()),
-                                        dt) :
-              0.);
+            holder_controlled() && !holder.engaged()
+              ? holder.closing_correction(state.tools.allowed_penetration(
+                                            state.tools.holder_index()),
+                                          dt)
+              : 0.);
         }
       ++corrections;
       if (linear_solver->factorisations() != factorised)
@@ -351,11 +350,10 @@ namespace formsolve
     template <int dim>
     double FormingProblem<dim>::extra_correction() const
     {
-      return holder_controlled() ?
-               std::abs(holder.last_correction()) /
-                 std::max(std::abs(holder.velocity()),
-                          state.tools.punch_speed()) :
-               0.;
+      return holder_controlled() ? std::abs(holder.last_correction()) /
+                                     std::max(std::abs(holder.velocity()),
+                                              state.tools.punch_speed())
+                                 : 0.;
     }
 
     template <int dim>
@@ -365,9 +363,9 @@ namespace formsolve
       e.residual = r;
       // rho is a force (N), as the nodal entries of r.
       e.extra          = holder_controlled() ? std::abs(holder.residual()) : 0.;
-      e.extra_relative = holder_controlled() ? std::abs(holder.residual()) /
-                                                 state.holder.target :
-                                               0.;
+      e.extra_relative = holder_controlled()
+                           ? std::abs(holder.residual()) / state.holder.target
+                           : 0.;
       e.scale          = f_scale;
       return e;
     }
@@ -376,9 +374,9 @@ namespace formsolve
     double
     FormingProblem<dim>::directional_derivative(const VectorType &dv) const
     {
-      return residual * dv + (holder_controlled() ?
-                                holder.last_correction() * holder.residual() :
-                                0.);
+      return residual * dv + (holder_controlled()
+                                ? holder.last_correction() * holder.residual()
+                                : 0.);
     }
 
     template <int dim>

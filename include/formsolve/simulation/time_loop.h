@@ -13,6 +13,7 @@
 #include <formsolve/material/rigid_viscoplastic.h>
 #include <formsolve/postprocess/contact_fields.h>
 #include <formsolve/postprocess/history_writer.h>
+#include <formsolve/postprocess/progress.h>
 #include <formsolve/postprocess/sheet_measures.h>
 #include <formsolve/postprocess/statistics_table.h>
 #include <formsolve/postprocess/vtu_writer.h>
@@ -22,6 +23,7 @@
 #include <formsolve/solver/step_solver.h>
 #include <formsolve/state/state.h>
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -87,6 +89,28 @@ namespace formsolve
       void validate_scene();
 
     private:
+      /// The mesh (new, or from the checkpoint), the output folder, the
+      /// refinement towards the radii, the first output and the coarse
+      /// start.
+      void start(const bool resume, RunSummary &summary);
+      void start_refinement(const bool resume);
+      /// The next step, accounted in @p summary; a step that fails at the
+      /// minimum time step leaves output and a checkpoint, then throws.
+      solver::StepReport solve_step(RunSummary &summary);
+      /// The converged step: state update, history.csv, the screen line.
+      /// Whether the fracture criterion has reached 1.
+      bool record_step(const solver::StepReport &report, RunSummary &summary);
+      void save_checkpoint(RunSummary &summary);
+      /// Last output and checkpoint, summaries, report.
+      void finish(RunSummary &summary);
+      /// Wall time of the run, that before a resume included (s).
+      double seconds() const
+      {
+        return *wall_before + std::chrono::duration<double>(
+                                std::chrono::steady_clock::now() - start_time)
+                                .count();
+      }
+
       void check_initial_scene();
       void prepare_output_directory();
       /// Adapt the mesh; logs a row of refinement.csv. Whether it changed.
@@ -96,8 +120,7 @@ namespace formsolve
       std::string check_events();
       /// Nonlinear solver/First step start = coarser mesh: the first step
       /// solved on the coarser mesh, as the start of the real one.
-      void start_from_coarser_mesh(RunSummary                    &summary,
-                                   const std::function<double()> &seconds);
+      void start_from_coarser_mesh(RunSummary &summary);
       void write_summary(RunSummary &summary) const;
       /// Thickness, strains, zones, draw-in and damage maxima of the state.
       postprocess::FormingMeasures<dim> measure_forming();
@@ -121,19 +144,24 @@ namespace formsolve
       dealii::ConditionalOStream      pcout;
       dealii::TimerOutput             timer;
 
-      material::RigidViscoplastic                   material;
-      material::DamageCriteria                      damage;
-      State<dim>                                    state;
-      state::HistoryUpdate<dim>                     history_update;
-      solver::Assembler<dim>                        assembler;
-      solver::StepSolver<dim>                       step_solver;
-      refinement::RefinementCriteria<dim>           criteria;
-      std::unique_ptr<postprocess::StatisticsTable> refinement_log;
-      std::unique_ptr<postprocess::VtuWriter<dim>>  writer;
-      postprocess::ContactFields<dim>               contact_fields;
-      postprocess::SheetMeasures<dim>               sheet;
-      int                                           last_output_step = -1;
-      unsigned int                                  refinement_rows  = 0;
+      material::RigidViscoplastic                      material;
+      material::DamageCriteria                         damage;
+      State<dim>                                       state;
+      state::HistoryUpdate<dim>                        history_update;
+      solver::Assembler<dim>                           assembler;
+      solver::StepSolver<dim>                          step_solver;
+      refinement::RefinementCriteria<dim>              criteria;
+      std::unique_ptr<postprocess::StatisticsTable>    refinement_log;
+      std::unique_ptr<postprocess::VtuWriter<dim>>     writer;
+      postprocess::ContactFields<dim>                  contact_fields;
+      postprocess::SheetMeasures<dim>                  sheet;
+      std::unique_ptr<const Checkpoint<dim>>           checkpoint;
+      std::unique_ptr<postprocess::HistoryWriter<dim>> history;
+      postprocess::Progress                            progress;
+      std::chrono::steady_clock::time_point            start_time;
+      const double *wall_before      = nullptr; // the summary's
+      int           last_output_step = -1;
+      unsigned int  refinement_rows  = 0;
     };
   } // namespace simulation
 } // namespace formsolve

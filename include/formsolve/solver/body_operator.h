@@ -22,7 +22,7 @@ namespace formsolve
     class BodyOperator
     {
     public:
-      BodyOperator(const Assembler<dim>             &assembler,
+      BodyOperator(const Assembler<dim>              &assembler,
                    const parameters::NonlinearSolver &prm);
 
       /// Frees the cell map and the dual directions (before a new system is
@@ -63,10 +63,7 @@ namespace formsolve
       /// Whether the tangent is the stress-velocity one.
       bool stress_velocity() const { return use_dual; }
       /// {rigid points, to rigid, to plastic} at the last accept() counted.
-      const std::array<unsigned int, 3> &rigid_counts() const
-      {
-        return counts;
-      }
+      const std::array<unsigned int, 3> &rigid_counts() const { return counts; }
 
     private:
       const Assembler<dim>       &assembler;

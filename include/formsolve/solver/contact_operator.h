@@ -63,7 +63,8 @@ namespace formsolve
       /// factors (collective); if so, the next estimate is not frozen.
       bool tighten();
       /// The solve converged: the strategy sees the body system.
-      void converged(const VectorType &r_b, const MatrixType &K_b, const double dt);
+      void
+      converged(const VectorType &r_b, const MatrixType &K_b, const double dt);
       bool reads_converged_system() const
       {
         return strategy.reads_converged_system();

@@ -125,7 +125,7 @@ namespace formsolve
       Evaluation   norms(const double r) const;
       /// The holder's last correction relative to its velocity (-).
       double extra_correction() const;
-      bool         newton(const Linearisation kind) const
+      bool   newton(const Linearisation kind) const
       {
         return kind != Linearisation::secant;
       }
@@ -155,11 +155,11 @@ namespace formsolve
       Point       point;
       Evaluation  last_evaluation;
 
-      double       dt = 0, f_scale = 0;
-      unsigned int penalty_updates = 0; // at Newton iterates of the step
-      unsigned int corrections     = 0; // linear solves of the step
-      unsigned int step_max_linear = 0;
-      double       step_condition  = 0;
+      double        dt = 0, f_scale = 0;
+      unsigned int  penalty_updates     = 0; // at Newton iterates of the step
+      unsigned int  corrections         = 0; // linear solves of the step
+      unsigned int  step_max_linear     = 0;
+      double        step_condition      = 0;
       unsigned long n_matrix_assemblies = 0;
       unsigned long n_factorisations    = 0;
     };
