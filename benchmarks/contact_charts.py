@@ -5,8 +5,8 @@
              delta in {1e-2, 1e-3, 1e-4} mm, augmented Lagrangian
   stability  short cup (3 mm stroke): fixed eps x time step and x mesh, and the
              same axes for adaptive / adaptive-strict with delta
-  condition  short frictionless cup: Lanczos condition estimate and AMG (CG)
-             iterations per solve against eps and delta
+  condition  short frictionless cup: Lanczos condition estimate against eps
+             and delta
   map        penetration map of the adaptive-strict delta = 1e-3 run at its
              worst step
 
@@ -97,12 +97,8 @@ def runs_stability():
 
 def runs_condition():
     runs = []
-    for solver, extra in (("direct", [("Linear solver/Condition estimate iterations", "400")]),
-                          ("amg", [("Linear solver/Type", "iterative"), ("Linear solver/Iterative solver", "CG"),
-                                   ("Linear solver/Max iterations", "1000")])):
-        # AMG on the default mesh: at level 2 ML's coarse level is the whole
-        # system (a direct solve, 1 iteration).
-        scene = SMALL if solver == "direct" else SMALL + [("Mesh/Planform refinements", "4")]
+    for solver, extra in (("direct", [("Linear solver/Condition estimate iterations", "400")]),):
+        scene = SMALL
         for e in range(1, 11):
             runs.append(dict(group="condition", name="%s-fixed-1e%d" % (solver, e), kind="fixed", solver=solver,
                              eps=10.0**e, delta=DELTA_FIXED, sets=scene + extra + fixed(10.0**e)))
@@ -316,9 +312,8 @@ def chart_condition(runs, plt):
     write_csv(os.path.join(DOC, "contact-condition.csv"), runs,
               ["name", "solver", "kind", "eps", "delta", "status", "steps", "max_penetration", "condition",
                "max_linear", "newton_per_step"])
-    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
-    for ax, solver, key, label in ((axes[0], "direct", "condition", "Lanczos estimate of cond(K) (400 CG steps)"),
-                                   (axes[1], "amg", "max_linear", "CG + ML AMG iterations per solve (max)")):
+    fig, axes = plt.subplots(1, 1, figsize=(7, 4.5))
+    for ax, solver, key, label in ((axes, "direct", "condition", "Lanczos estimate of cond(K) (400 CG steps)"),):
         fx = [r for r in runs if r["solver"] == solver and r["kind"] == "fixed"]
         ok = [r for r in fx if r["status"] in ("converged", "penetration > delta") and r[key] > 0]
         ax.plot([r["eps"] for r in ok], [r[key] for r in ok], "o-", color="tab:gray", label="fixed eps")
@@ -348,7 +343,7 @@ def chart_condition(runs, plt):
         ax.set_xlabel("fixed penalty factor (N/mm^3)")
         ax.set_ylabel(label)
         ax.grid(True, which="both", alpha=0.3)
-    fig.suptitle("Cup drawn 1 mm, planform level 2 (condition) and 4 (AMG), frictionless (symmetric tangent); dashed: adaptive runs",
+    fig.suptitle("Cup drawn 1 mm, planform level 2, frictionless (symmetric tangent); dashed: adaptive runs",
                  fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(DOC, "contact-condition.png"), dpi=130)

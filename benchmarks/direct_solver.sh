@@ -1,10 +1,9 @@
 #!/usr/bin/env bash
 # The direct solver's settings on formsolve's own matrices (Linear solver/
-# Direct solver, Symmetric factorisation, Ordering; Nonlinear solver/Friction
+# Symmetric factorisation, Ordering; Nonlinear solver/Friction
 # tangent): the quarter 3-D cup at planform level 5 (47.5k DoFs), fixed
 # penalty, first 1.5 mm (6 steps), on 1 and 2 ranks; the same without friction
-# (symmetric tangent: LU against LDL^T); and at level 4 (12.3k DoFs, first
-# 0.5 mm) the exact friction tangent against the symmetrised one.
+# (symmetric tangent: LU against LDL^T).
 # Writes doc/direct-solver.csv and prints the table of doc/performance.md.
 # Usage: bash benchmarks/direct_solver.sh [--force]
 set -euo pipefail
@@ -31,27 +30,18 @@ quarter=(--set "Geometry/Model=quarter" --set "Mesh refinement/Interval=0"
   --set "Mesh/Layers through thickness=4" --set "Contact/Penalty strategy=fixed"
   --set "Time stepping/End of run=stroke")
 l5=("${quarter[@]}" --set "Mesh/Planform refinements=5" --set "Tools/Punch/Stroke=1.5")
-l4=("${quarter[@]}" --set "Mesh/Planform refinements=4" --set "Tools/Punch/Stroke=0.5")
 frictionless=(--set "Tools/Punch/Friction coefficient=0" --set "Tools/Die/Friction coefficient=0"
   --set "Tools/Blank holder/Friction coefficient=0")
-amesos=(--set "Linear solver/Direct solver=Amesos MUMPS")
 auto=(--set "Linear solver/Ordering=automatic")
 lu=(--set "Linear solver/Symmetric factorisation=false")
-symmetrised=(--set "Nonlinear solver/Friction tangent=symmetrised")
 runs=(
-  "l5-amesos 1" "l5-mumps-auto 1" "l5-mumps-metis 1"
-  "l5-amesos-2ranks 2" "l5-mumps-metis-2ranks 2"
-  "l5-nofriction-lu 1" "l5-nofriction-ldlt 1"
-  "l4-friction-exact 1" "l4-friction-symmetrised 1")
-run l5-amesos 1 "${l5[@]}" "${amesos[@]}"
+  "l5-mumps-auto 1" "l5-mumps-metis 1" "l5-mumps-metis-2ranks 2"
+  "l5-nofriction-lu 1" "l5-nofriction-ldlt 1")
 run l5-mumps-auto 1 "${l5[@]}" "${auto[@]}"
 run l5-mumps-metis 1 "${l5[@]}"
-run l5-amesos-2ranks 2 "${l5[@]}" "${amesos[@]}"
 run l5-mumps-metis-2ranks 2 "${l5[@]}"
 run l5-nofriction-lu 1 "${l5[@]}" "${frictionless[@]}" "${lu[@]}"
 run l5-nofriction-ldlt 1 "${l5[@]}" "${frictionless[@]}"
-run l4-friction-exact 1 "${l4[@]}"
-run l4-friction-symmetrised 1 "${l4[@]}" "${symmetrised[@]}"
 /usr/bin/python3 - "$out" "$root/doc/direct-solver.csv" "${runs[@]}" <<'PY'
 import csv, re, sys
 out, csv_path = sys.argv[1:3]

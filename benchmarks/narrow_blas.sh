@@ -1,50 +1,43 @@
 #!/usr/bin/env bash
-# Narrow BLAS calls (Linear solver/Narrow BLAS calls, source/app/narrow_blas.cc)
-# and the bordered system's two right-hand sides in one solve
-# (solver/linear_solver_pair.cc), measured:
+# The opt-in narrow-BLAS library (preload/narrow_blas.cc, started by
+# scripts/formsolve-run --narrow-blas), measured:
 # 1. the kernels: GEMM/TRSM with one and two columns against GEMV/TRSV
 #    (benchmarks/blas_narrow_kernels.c, linked with the system's libblas)
 #    -> doc/narrow-blas-kernels.csv;
 # 2. the whole shipped 3-D draw (prm/cup-drawing-3d.prm as shipped, VTU off)
-#    on 1 and 2 ranks, with narrow calls and without, REPS times each,
-#    interleaved; with BASE_EXE=<formsolve of an older build> also that build
-#    (it runs without the Narrow BLAS entry, which it does not know; BASE_LIB:
-#    a directory to put first in LD_LIBRARY_PATH for it, e.g. where its
-#    libformsolve_core.so was copied)
+#    on 1 and 2 ranks through formsolve-run, without the library ("plain")
+#    and with it ("preload"), REPS times each, interleaved
 #    -> doc/narrow-blas.csv; runs in results/narrow-blas/.
 # About 2.5 min per 1-rank run and 2 min per 2-rank run on 2 quiet cores.
-# Usage: [REPS=2] [RANKS="1 2"] [BASE_EXE=...] bash benchmarks/narrow_blas.sh
+# Usage: [REPS=2] [RANKS="1 2"] bash benchmarks/narrow_blas.sh
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-exe=${FORMSOLVE_EXE:-$root/build/formsolve}
-[ -x "$exe" ] || bash "$root/scripts/build.sh"
+build=${BUILD_DIR:-$root/build}
+[ -x "$build/formsolve" ] || bash "$root/scripts/build.sh"
 out=$root/results/narrow-blas
 mkdir -p "$out"
 git -C "$root" rev-parse --short HEAD > "$out/commit"
-export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMP_NUM_THREADS=1
 
 gcc -O2 -o "$out/blas_narrow_kernels" "$root/benchmarks/blas_narrow_kernels.c" -lblas
 "$out/blas_narrow_kernels" | tee "$root/doc/narrow-blas-kernels.csv"
 
-run() { # name exe ranks sets...
-  local name=$1 program=$2 n=$3 libs=${LD_LIBRARY_PATH:-}
-  shift 3
+run() { # name ranks formsolve-run options...
+  local name=$1 n=$2
+  shift 2
   echo "== $name"
-  [ "$program" = "${BASE_EXE:-}" ] && [ -n "${BASE_LIB:-}" ] && libs=$BASE_LIB${libs:+:$libs}
-  (cd "$root/prm" && LD_LIBRARY_PATH=$libs mpirun -np "$n" "$program" cup-drawing-3d.prm \
+  (cd "$root/prm" && "$build/formsolve-run" -np "$n" "$@" cup-drawing-3d.prm \
     --set "Output/Output directory=$out/$name" --set "Output/Output interval=0" \
-    --set "Output/Report=false" "$@" > "$out/$name.log" 2>&1)
+    --set "Output/Report=false" > "$out/$name.log" 2>&1)
 }
 names=()
 for n in ${RANKS:-1 2}; do
   for rep in $(seq 1 "${REPS:-2}"); do
-    if [ -n "${BASE_EXE:-}" ]; then
-      run "base-$n-$rep" "$BASE_EXE" "$n"
-      names+=("base-$n-$rep")
-    fi
-    run "narrow-$n-$rep" "$exe" "$n"
-    run "wide-$n-$rep" "$exe" "$n" --set "Linear solver/Narrow BLAS calls=false"
-    names+=("narrow-$n-$rep" "wide-$n-$rep")
+    run "plain-$n-$rep" "$n"
+    run "preload-$n-$rep" "$n" --narrow-blas
+    grep -q "narrow calls to BLAS-2" "$out/preload-$n-$rep.log" \
+      || { echo "the preload run did not report the library" >&2; exit 1; }
+    names+=("plain-$n-$rep" "preload-$n-$rep")
   done
 done
 cd "$root/benchmarks"

@@ -6,10 +6,8 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/install-dependencies.sh"
 bash "$root/scripts/build.sh"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 cd "$root"
-ranks=${RANKS:-1}
-mpirun -np "$ranks" "$root/build/formsolve" prm/cup-drawing.prm "$@"
+"$root/build/formsolve-run" -np "${RANKS:-1}" prm/cup-drawing.prm "$@"
 echo
-echo "results: $root/results/cup-drawing (history.csv; solution.pvd and revolved.pvd for ParaView; parameters.prm)"
-echo "the same cup in 3-D: mpirun -np 2 build/formsolve prm/cup-drawing-3d.prm"
+echo "results: $root/results/cup-drawing (history.csv; solution.pvd and revolved.pvd for ParaView; parameters.prm; report/report.md)"
+echo "the same cup in 3-D: build/formsolve-run -np 2 prm/cup-drawing-3d.prm"

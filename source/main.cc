@@ -3,9 +3,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <formsolve/app/blas_kernel.h>
 #include <formsolve/app/error_exit.h>
 #include <formsolve/parameters/command_line.h>
+#include <formsolve/parameters/manual.h>
 #include <formsolve/parameters/parameters.h>
 #include <formsolve/simulation/time_loop.h>
 
@@ -52,7 +52,6 @@ namespace
 int main(int argc, char **argv)
 {
   using namespace dealii;
-  formsolve::app::select_blas_kernel(argv); // before MPI: it may restart
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   formsolve::app::prepare_error_exit();
@@ -67,10 +66,12 @@ int main(int argc, char **argv)
         }
       ParameterHandler prm;
       formsolve::parameters::Run::declare(prm);
-      if (cl.print_parameters)
+      if (cl.print_parameters || cl.parameter_manual)
         {
-          if (root)
+          if (root && cl.print_parameters)
             prm.print_parameters(std::cout, ParameterHandler::PRM);
+          else if (root)
+            formsolve::parameters::write_manual(prm, std::cout);
           return 0;
         }
       AssertThrow(!cl.input_file.empty(),

@@ -2,7 +2,6 @@
 
 #include <dlfcn.h>
 #include <strings.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <cstring>
@@ -37,26 +36,7 @@ namespace formsolve
         return nullptr;
       }
 
-      bool under_valgrind()
-      {
-        const char *preload = std::getenv("LD_PRELOAD");
-        return preload && std::strstr(preload, "vgpreload");
-      }
     } // namespace
-
-    void select_blas_kernel(char **argv)
-    {
-      const char *core = openblas_core();
-      if (core == nullptr || strcasecmp(core, "prescott") != 0 ||
-          std::getenv("OPENBLAS_CORETYPE") || under_valgrind())
-        return;
-      const char *kernel = kernel_for_this_cpu();
-      if (kernel == nullptr)
-        return;
-      setenv("OPENBLAS_CORETYPE", kernel, 1);
-      execv("/proc/self/exe", argv);
-      unsetenv("OPENBLAS_CORETYPE"); // exec failed: run on as we are
-    }
 
     std::string blas_kernel()
     {
@@ -66,7 +46,19 @@ namespace formsolve
       std::string s = std::string("OpenBLAS ") + core;
       if (std::getenv("OPENBLAS_CORETYPE"))
         s += " (OPENBLAS_CORETYPE)";
+      if (dlsym(RTLD_DEFAULT, "formsolve_narrowed_blas_calls") != nullptr)
+        s += ", narrow calls to BLAS-2";
       return s;
+    }
+
+    std::string blas_advice()
+    {
+      const char *core   = openblas_core();
+      const char *kernel = kernel_for_this_cpu();
+      if (core == nullptr || strcasecmp(core, "prescott") != 0 ||
+          std::getenv("OPENBLAS_CORETYPE") || kernel == nullptr)
+        return "";
+      return std::string("OPENBLAS_CORETYPE=") + kernel;
     }
   } // namespace app
 } // namespace formsolve

@@ -18,7 +18,6 @@ namespace formsolve
                            const double                     v0,
                            const double                     dt,
                            const bool                       newton,
-                           const bool                       symmetrise,
                            const AffineConstraints<double> &constraints,
                            TrilinosWrappers::SparseMatrix  *matrix,
                            TrilinosWrappers::MPI::Vector   *residual,
@@ -44,10 +43,7 @@ namespace formsolve
               node_dofs[a] = set.nodes[pair.node].dofs[a];
               rc[a]        = -sign * f.force[a];
               for (unsigned int b = 0; b < dim; ++b)
-                Kc(a, b) =
-                  sign * (symmetrise
-                            ? 0.5 * (f.stiffness[a][b] + f.stiffness[b][a])
-                            : f.stiffness[a][b]);
+                Kc(a, b) = sign * f.stiffness[a][b];
             }
           // Rows and columns given apart: no entries on constrained
           // diagonals, which sign = -1 could not undo (deal.II adds
@@ -72,7 +68,6 @@ namespace formsolve
                                   const tools::ToolSet<dim> &,       \
                                   double,                            \
                                   double,                            \
-                                  bool,                              \
                                   bool,                              \
                                   const AffineConstraints<double> &, \
                                   TrilinosWrappers::SparseMatrix *,  \

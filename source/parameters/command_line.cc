@@ -22,6 +22,10 @@ namespace formsolve
              "default\n"
              "                               parameter file to standard "
              "output\n"
+             "  --parameter-manual           write the parameter manual "
+             "(Markdown,\n"
+             "                               doc/parameters.md) to standard "
+             "output\n"
              "  --validate                   check the input (parameters, "
              "mesh, initial\n"
              "                               position of the tools) and stop; "
@@ -47,6 +51,8 @@ namespace formsolve
             cl.help = true;
           else if (a == "--print-parameters")
             cl.print_parameters = true;
+          else if (a == "--parameter-manual")
+            cl.parameter_manual = true;
           else if (a == "--validate")
             cl.validate = true;
           else if (a == "--resume")

@@ -1,3 +1,4 @@
+#include <formsolve/parameters/choice.h>
 #include <formsolve/parameters/choices.h>
 #include <formsolve/parameters/contact.h>
 #include <formsolve/parameters/require.h>
@@ -7,6 +8,17 @@ namespace formsolve
   namespace parameters
   {
     using namespace dealii::Patterns;
+
+    namespace
+    {
+      const Choice<AdaptiveEstimate> estimate_names{
+        {"force", AdaptiveEstimate::force},
+        {"projection", AdaptiveEstimate::projection}};
+      const Choice<FactorUpdate> factor_update_names{
+        {"iteration", FactorUpdate::iteration},
+        {"iteration and predictor", FactorUpdate::and_predictor},
+        {"step", FactorUpdate::step}};
+    } // namespace
 
     void Contact::declare(ParameterHandler &prm)
     {
@@ -54,7 +66,7 @@ namespace formsolve
       prm.declare_entry(
         "Adaptive estimate",
         "force",
-        Selection("force|projection"),
+        Selection(estimate_names.pattern()),
         "projection: eps_k = n.(r + K dv)_k / delta, the published method "
         "with the node moved to penetration delta (dv) through the tangent "
         "K; force: its limit dv -> 0, eps_k = n.r_k / delta, the normal "
@@ -89,7 +101,7 @@ namespace formsolve
       prm.declare_entry(
         "Factor update",
         "iteration",
-        Selection("iteration|iteration and predictor|step"),
+        Selection(factor_update_names.pattern()),
         "Adaptive: when the factors are estimated. iteration: at every "
         "Newton iteration from the current system (until 'Freeze factors' "
         "stops them); at a step's predictor, where the body is far from "
@@ -147,14 +159,8 @@ namespace formsolve
       lower_bound              = prm.get_double("Lower bound");
       upper_bound              = prm.get_double("Upper bound");
       freeze                   = prm.get_bool("Freeze factors");
-      const std::string update = prm.get("Factor update");
-      factor_update            = update == "step" ? FactorUpdate::step
-                                 : update == "iteration and predictor"
-                                   ? FactorUpdate::and_predictor
-                                   : FactorUpdate::iteration;
-      adaptive_estimate        = prm.get("Adaptive estimate") == "projection"
-                                   ? AdaptiveEstimate::projection
-                                   : AdaptiveEstimate::force;
+      factor_update = factor_update_names.parse(prm.get("Factor update"));
+      adaptive_estimate        = estimate_names.parse(prm.get("Adaptive estimate"));
       damping                  = prm.get_double("Damping");
       target_fraction          = prm.get_double("Target fraction");
       max_status_flips         = prm.get_integer("Max status flips");

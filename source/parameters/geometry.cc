@@ -1,3 +1,4 @@
+#include <formsolve/parameters/choice.h>
 #include <formsolve/parameters/geometry.h>
 #include <formsolve/parameters/require.h>
 
@@ -6,6 +7,14 @@ namespace formsolve
   namespace parameters
   {
     using namespace dealii::Patterns;
+
+    namespace
+    {
+      const Choice<BlankShape> blank_shape_names{
+        {"round", BlankShape::round},
+        {"rectangle", BlankShape::rectangle},
+        {"gmsh", BlankShape::gmsh}};
+    } // namespace
 
     void Geometry::declare(ParameterHandler &prm)
     {
@@ -23,7 +32,7 @@ namespace formsolve
       prm.declare_entry(
         "Blank shape",
         "round",
-        Selection("round|rectangle|gmsh"),
+        Selection(blank_shape_names.pattern()),
         "Planform of the full blank: round (Blank diameter) or rectangle "
         "(Blank length x Blank width), of which the Model takes its part; "
         "gmsh reads the planform of the modelled part from 'Mesh file' (3-D "
@@ -60,10 +69,7 @@ namespace formsolve
     {
       prm.enter_subsection("Geometry");
       model            = model::parse_model(prm.get("Model"));
-      const auto shape = prm.get("Blank shape");
-      blank_shape      = shape == "round"       ? BlankShape::round
-                         : shape == "rectangle" ? BlankShape::rectangle
-                                                : BlankShape::gmsh;
+      blank_shape = blank_shape_names.parse(prm.get("Blank shape"));
       blank_diameter   = prm.get_double("Blank diameter");
       blank_length     = prm.get_double("Blank length");
       blank_width      = prm.get_double("Blank width");

@@ -1,3 +1,4 @@
+#include <formsolve/parameters/choice.h>
 #include <formsolve/parameters/material.h>
 #include <formsolve/parameters/require.h>
 
@@ -9,6 +10,17 @@ namespace formsolve
   namespace parameters
   {
     using namespace dealii::Patterns;
+
+    namespace
+    {
+      const Choice<RigidZone> rigid_zone_names{
+        {"smooth", RigidZone::smooth},
+        {"piecewise", RigidZone::piecewise}};
+      const Choice<FractureCriterion> fracture_names{
+        {"oyane", FractureCriterion::oyane},
+        {"cockcroft-latham", FractureCriterion::cockcroft_latham},
+        {"none", FractureCriterion::none}};
+    } // namespace
 
     namespace
     {
@@ -87,7 +99,7 @@ namespace formsolve
       prm.declare_entry(
         "Rigid zone",
         "smooth",
-        Selection("smooth|piecewise"),
+        Selection(rigid_zone_names.pattern()),
         "How the flow law meets the rigid zone, with r the equivalent "
         "strain rate and r_c the Limiting strain rate. smooth: the "
         "equivalent stress is s r/sqrt(r^2 + r_c^2), linear viscous well "
@@ -122,7 +134,7 @@ namespace formsolve
       prm.declare_entry(
         "Fracture criterion",
         "oyane",
-        Selection("oyane|cockcroft-latham|none"),
+        Selection(fracture_names.pattern()),
         "The criterion that decides fracture: the punch travel at which it "
         "first reaches 1 anywhere is the critical stroke.");
       prm.declare_entry(
@@ -151,16 +163,12 @@ namespace formsolve
       rate_sensitivity      = prm.get_double("Rate sensitivity");
       reference_strain_rate = prm.get_double("Reference strain rate");
       limiting_strain_rate  = prm.get_double("Limiting strain rate");
-      rigid_zone         = prm.get("Rigid zone") == "smooth" ? RigidZone::smooth
-                                                             : RigidZone::piecewise;
+      rigid_zone         = rigid_zone_names.parse(prm.get("Rigid zone"));
       volumetric_penalty = prm.get_double("Volumetric penalty");
       oyane_a            = prm.get_double("Oyane a");
       oyane_b            = prm.get_double("Oyane b");
       cockcroft_latham   = prm.get_double("Cockcroft-Latham critical value");
-      const auto f       = prm.get("Fracture criterion");
-      fracture           = f == "oyane"              ? FractureCriterion::oyane
-                           : f == "cockcroft-latham" ? FractureCriterion::cockcroft_latham
-                                                     : FractureCriterion::none;
+      fracture = fracture_names.parse(prm.get("Fracture criterion"));
       forming_limit_table = parse_table(prm.get("Forming limit table"));
       safety_margin       = prm.get_double("Safety margin");
       prm.leave_subsection();

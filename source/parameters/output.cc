@@ -45,9 +45,10 @@ namespace formsolve
         "Report",
         "true",
         Bool(),
-        "At the end of the run write report/ (pictures and report.md, "
-        "scripts/formsolve-report); a missing Python module is reported and "
-        "does not fail the run.");
+        "At the end of the run write report/ (pictures and report.md) with "
+        "the formsolve-report next to the formsolve binary (the same as "
+        "running formsolve-report <Output directory>); a missing Python "
+        "module is reported and does not fail the run.");
       prm.declare_entry(
         "Checkpoint interval",
         "0",

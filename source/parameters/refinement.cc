@@ -1,3 +1,4 @@
+#include <formsolve/parameters/choice.h>
 #include <formsolve/parameters/refinement.h>
 #include <formsolve/parameters/require.h>
 
@@ -6,6 +7,12 @@ namespace formsolve
   namespace parameters
   {
     using namespace dealii::Patterns;
+
+    namespace
+    {
+      const Choice<Indicator> indicator_names{{"none", Indicator::none},
+                                              {"kelly", Indicator::kelly}};
+    } // namespace
 
     void MeshRefinement::declare(ParameterHandler &prm)
     {
@@ -60,7 +67,7 @@ namespace formsolve
       prm.declare_entry(
         "Indicator",
         "none",
-        Selection("none|kelly"),
+        Selection(indicator_names.pattern()),
         "Solution-based criterion, combined with the radius bands: kelly "
         "refines the cells with the largest jumps of the velocity gradient "
         "(KellyErrorEstimator, current configuration) and coarsens those "
@@ -98,7 +105,7 @@ namespace formsolve
       coarsen_factor  = prm.get_double("Coarsening factor");
       shape_tolerance = prm.get_double("Coarsening shape tolerance");
       indicator =
-        prm.get("Indicator") == "kelly" ? Indicator::kelly : Indicator::none;
+        indicator_names.parse(prm.get("Indicator"));
       indicator_level  = prm.get_integer("Indicator level");
       refine_fraction  = prm.get_double("Refine fraction");
       coarsen_fraction = prm.get_double("Coarsen fraction");

@@ -98,9 +98,6 @@ namespace formsolve
       std::pair<double, std::string> memory_per_dof(const Run &run)
       {
         const LinearSolver &l = run.linear;
-        if (l.type != LinearSolverType::direct ||
-            l.direct_solver != DirectSolver::mumps)
-          return {20e3, "Amesos or the iterative solver's direct fallback"};
         const bool ldlt =
           l.symmetric_factorisation &&
           (run.symmetric_tangent() ||
@@ -119,8 +116,6 @@ namespace formsolve
 
     bool Run::symmetric_tangent() const
     {
-      if (nonlinear.symmetrise_friction)
-        return true;
       for (const Tool *t : {&tools.punch, &tools.die, &tools.blank_holder})
         if (t->enabled && t->friction_coefficient != 0)
           return false;

@@ -1,3 +1,4 @@
+#include <formsolve/parameters/choice.h>
 #include <formsolve/parameters/require.h>
 #include <formsolve/parameters/solvers.h>
 
@@ -8,6 +9,26 @@ namespace formsolve
   namespace parameters
   {
     using namespace dealii::Patterns;
+
+    namespace
+    {
+      const Choice<EndOfRun> end_of_run_names{
+        {"stroke", EndOfRun::stroke},
+        {"holder release", EndOfRun::holder_release},
+        {"draw-through", EndOfRun::draw_through}};
+      const Choice<Tangent> tangent_names{
+        {"newton", Tangent::newton},
+        {"stress-velocity", Tangent::stress_velocity}};
+      const Choice<CorrectionMeasure> correction_measure_names{
+        {"contraction", CorrectionMeasure::contraction},
+        {"last correction", CorrectionMeasure::last}};
+      const Choice<Predictor> predictor_names{
+        {"previous velocity", Predictor::previous_velocity},
+        {"keep contact", Predictor::keep_contact}};
+      const Choice<FirstStepStart> first_step_start_names{
+        {"rest", FirstStepStart::rest},
+        {"coarser mesh", FirstStepStart::coarser_mesh}};
+    } // namespace
 
     void TimeStepping::declare(ParameterHandler &prm)
     {
@@ -59,7 +80,7 @@ namespace formsolve
       prm.declare_entry(
         "End of run",
         "stroke",
-        Selection("stroke|holder release|draw-through"),
+        Selection(end_of_run_names.pattern()),
         "stroke: the run ends at the punch stroke. holder release: also "
         "ends once the blank rim has left the blank holder. draw-through: "
         "also ends once the whole blank lies inside the die opening (the "
@@ -78,10 +99,7 @@ namespace formsolve
       easy_iterations   = prm.get_integer("Easy step iterations");
       regrowth_steps    = prm.get_integer("Regrowth after steps");
       max_cutbacks      = prm.get_integer("Max cutbacks");
-      const auto end    = prm.get("End of run");
-      end_of_run        = end == "stroke"           ? EndOfRun::stroke
-                          : end == "holder release" ? EndOfRun::holder_release
-                                                    : EndOfRun::draw_through;
+      end_of_run = end_of_run_names.parse(prm.get("End of run"));
       prm.leave_subsection();
     }
 
@@ -102,7 +120,7 @@ namespace formsolve
       prm.declare_entry(
         "Tangent",
         "stress-velocity",
-        Selection("newton|stress-velocity"),
+        Selection(tangent_names.pattern()),
         "Linearisation of the flow law. newton: the derivative of the "
         "stress as a function of the velocity; for a nearly rate-insensitive "
         "law it keeps almost no stiffness along the current strain rate and "
@@ -110,16 +128,6 @@ namespace formsolve
         "an unknown of its own at each quadrature point and eliminated "
         "(doc/theory.md, eq. 4b): the same converged solution in fewer "
         "iterations.");
-      prm.declare_entry(
-        "Friction tangent",
-        "exact",
-        Selection("exact|symmetrised"),
-        "Stiffness of the regularised Coulomb friction at a contact node. "
-        "exact: its derivative, not symmetric (the tangential force depends "
-        "on the normal penetration and the slip direction); symmetrised: "
-        "(K + K^T)/2, which lets the linear solver factorise LDL^T (Linear "
-        "solver/Symmetric factorisation) at the cost of an inexact Newton "
-        "step while sliding.");
       prm.declare_entry("Max iterations",
                         "60",
                         Integer(1),
@@ -143,7 +151,7 @@ namespace formsolve
       prm.declare_entry(
         "Correction measure",
         "contraction",
-        Selection("contraction|last correction"),
+        Selection(correction_measure_names.pattern()),
         "The velocity error compared with Correction tolerance. last "
         "correction: |dv| of the iteration just taken, which bounds the "
         "error before it. contraction: the error it leaves, theta/(1 - "
@@ -167,7 +175,7 @@ namespace formsolve
       prm.declare_entry(
         "Predictor",
         "keep contact",
-        Selection("previous velocity|keep contact"),
+        Selection(predictor_names.pattern()),
         "The first iterate of a step. previous velocity: the previous step's "
         "velocity. keep contact: the same, except at the nodes that were in "
         "contact at the end of the previous step and that this velocity "
@@ -227,7 +235,7 @@ namespace formsolve
       prm.declare_entry(
         "First step start",
         "coarser mesh",
-        Selection("rest|coarser mesh"),
+        Selection(first_step_start_names.pattern()),
         "Where Newton starts in the first step, when the sheet is at rest. "
         "rest: zero velocity. coarser mesh: the first step is solved first "
         "on the mesh one level coarser everywhere (in the plane and through "
@@ -255,28 +263,20 @@ namespace formsolve
     void NonlinearSolver::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Nonlinear solver");
-      tangent                = prm.get("Tangent") == "newton" ? Tangent::newton
-                                                              : Tangent::stress_velocity;
-      symmetrise_friction    = prm.get("Friction tangent") == "symmetrised";
+      tangent                = tangent_names.parse(prm.get("Tangent"));
       max_iterations         = prm.get_integer("Max iterations");
       residual_tolerance     = prm.get_double("Residual tolerance");
       correction_tolerance   = prm.get_double("Correction tolerance");
       forcing                = prm.get_double("Forcing");
-      correction_measure     = prm.get("Correction measure") == "contraction"
-                                 ? CorrectionMeasure::contraction
-                                 : CorrectionMeasure::last;
-      predictor              = prm.get("Predictor") == "keep contact"
-                                 ? Predictor::keep_contact
-                                 : Predictor::previous_velocity;
+      correction_measure     = correction_measure_names.parse(prm.get("Correction measure"));
+      predictor              = predictor_names.parse(prm.get("Predictor"));
       max_line_search_steps  = prm.get_integer("Max line search steps");
       line_search_memory     = prm.get_integer("Line search memory");
       deferred_tangent       = prm.get_bool("Deferred tangent");
       picard_iterations      = prm.get_integer("Picard iterations");
       picard_fallback        = prm.get_bool("Picard fallback");
       log_iterations         = prm.get_bool("Log iterations");
-      first_step_start       = prm.get("First step start") == "coarser mesh"
-                                 ? FirstStepStart::coarser_mesh
-                                 : FirstStepStart::rest;
+      first_step_start       = first_step_start_names.parse(prm.get("First step start"));
       coarse_cell_size_limit = prm.get_double("Coarse cell size limit");
       prm.leave_subsection();
     }

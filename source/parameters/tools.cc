@@ -1,3 +1,4 @@
+#include <formsolve/parameters/choice.h>
 #include <formsolve/parameters/require.h>
 #include <formsolve/parameters/tools.h>
 
@@ -6,6 +7,16 @@ namespace formsolve
   namespace parameters
   {
     using namespace dealii::Patterns;
+
+    namespace
+    {
+      const Choice<ToolShape> shape_names{
+        {"round", ToolShape::round},
+        {"rounded rectangle", ToolShape::rounded_rectangle},
+        {"flat", ToolShape::flat}};
+      const Choice<HolderControl> control_names{{"gap", HolderControl::gap},
+                                                {"force", HolderControl::force}};
+    } // namespace
 
     void Tool::declare(ParameterHandler &prm, const Tool &d)
     {
@@ -18,7 +29,7 @@ namespace formsolve
         d.shape == ToolShape::round               ? "round"
         : d.shape == ToolShape::rounded_rectangle ? "rounded rectangle"
                                                   : "flat",
-        Selection("round|rounded rectangle|flat"),
+        Selection(shape_names.pattern()),
         "round: surface of revolution about the z axis (in the axisymmetric "
         "model its r-z profile); rounded rectangle: for square cups (3-D "
         "models); flat: an infinite plane.");
@@ -75,10 +86,7 @@ namespace formsolve
     void Tool::parse(ParameterHandler &prm)
     {
       enabled              = prm.get_bool("Enabled");
-      const auto s         = prm.get("Shape");
-      shape                = s == "round"               ? ToolShape::round
-                             : s == "rounded rectangle" ? ToolShape::rounded_rectangle
-                                                        : ToolShape::flat;
+      shape = shape_names.parse(prm.get("Shape"));
       diameter             = prm.get_double("Diameter");
       length               = prm.get_double("Length");
       width                = prm.get_double("Width");
@@ -148,7 +156,7 @@ namespace formsolve
       prm.declare_entry(
         "Control",
         "force",
-        Selection("gap|force"),
+        Selection(control_names.pattern()),
         "gap: the holder stays where 'Gap' puts it. force: the holder moves "
         "along z so that its contact force on the sheet equals 'Force' in "
         "every step (solved with the velocities, doc/theory.md); it stops "
@@ -176,8 +184,7 @@ namespace formsolve
       prm.leave_subsection();
       prm.enter_subsection("Blank holder");
       blank_holder.parse(prm);
-      holder_control = prm.get("Control") == "force" ? HolderControl::force
-                                                     : HolderControl::gap;
+      holder_control = control_names.parse(prm.get("Control"));
       holder_force   = prm.get_double("Force");
       prm.leave_subsection();
       prm.leave_subsection();

@@ -3,7 +3,6 @@
 
 #include <formsolve/app/blas_kernel.h>
 #include <formsolve/app/error_exit.h>
-#include <formsolve/app/narrow_blas.h>
 #include <formsolve/geometry/blank_mesh.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/postprocess/history_writer.h>
@@ -49,7 +48,6 @@ namespace formsolve
                    geometry::initial_mesh_level(run.mesh))
         , sheet(run)
     {
-      app::set_narrow_blas(run.linear.narrow_blas_calls);
     }
 
     template <int dim>
@@ -184,8 +182,12 @@ namespace formsolve
             << ", " << prm.mesh.layers << " layers), contact "
             << step_solver.strategy_name() << ", forces scaled by "
             << prm.geometry.symmetry_factor() << " to the full part; BLAS "
-            << app::blas_kernel()
-            << (app::narrow_blas() ? ", narrow calls to BLAS-2" : "") << "\n";
+            << app::blas_kernel() << "\n";
+      if (const auto advice = app::blas_advice(); !advice.empty())
+        pcout << "note: OpenBLAS runs its generic Prescott kernels on this "
+                 "CPU, which makes the factorisations about 2x slower; start "
+                 "formsolve with "
+              << advice << " (scripts/formsolve-run does)\n";
       if (resume)
         pcout << "resumed from the checkpoint at step " << state.step
               << ", punch travel " << state.tools.punch_travel() << " mm"

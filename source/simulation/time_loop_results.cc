@@ -9,6 +9,9 @@
 #include <formsolve/simulation/time_loop.h>
 #include <formsolve/state/sheet_integrals.h>
 
+#include <unistd.h>
+
+#include <climits>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -22,6 +25,19 @@ namespace formsolve
 
     namespace
     {
+      /// formsolve-report next to the running binary (the build tree and an
+      /// installed bin/ both keep it there); empty if it is not there.
+      std::string report_tool()
+      {
+        char          exe[PATH_MAX];
+        const ssize_t n = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
+        if (n <= 0)
+          return "";
+        std::string path(exe, n);
+        path = path.substr(0, path.rfind('/') + 1) + "formsolve-report";
+        return access(path.c_str(), X_OK) == 0 ? path : "";
+      }
+
       template <int dim>
       std::string where(const Point<dim> &x)
       {
@@ -145,10 +161,18 @@ namespace formsolve
     {
       if (!prm.output.report || Utilities::MPI::this_mpi_process(comm) != 0)
         return;
-      const std::string &dir = prm.output.directory;
-      const std::string  cmd = std::string(FORMSOLVE_PYTHON) + " '" +
-                              FORMSOLVE_REPORT_SCRIPT + "' '" + dir + "' > '" +
-                              dir + "/report.log' 2>&1";
+      const std::string &dir  = prm.output.directory;
+      const std::string  tool = report_tool();
+      if (tool.empty())
+        {
+          std::cerr << "formsolve: warning: no run report (formsolve-report "
+                       "is not next to the formsolve binary); run "
+                       "formsolve-report "
+                    << dir << std::endl;
+          return;
+        }
+      const std::string cmd =
+        "'" + tool + "' '" + dir + "' > '" + dir + "/report.log' 2>&1";
       if (std::system(cmd.c_str()) == 0)
         pcout << "report: " << dir << "/report/report.md" << std::endl;
       else

@@ -163,7 +163,6 @@ namespace formsolve
                                  prm.contact.regularisation_velocity,
                                  dt,
                                  newton,
-                                 prm.nonlinear.symmetrise_friction,
                                  state.constraints,
                                  matrix,
                                  residual,

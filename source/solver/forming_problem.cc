@@ -5,7 +5,7 @@
 
 #include <formsolve/model/dimensions.h>
 #include <formsolve/solver/forming_problem.h>
-#include <formsolve/solver/null_space.h>
+#include <formsolve/solver/condition_estimate.h>
 
 #include <cmath>
 #include <sstream>
@@ -43,15 +43,10 @@ namespace formsolve
       body.clear();
       {
         DynamicSparsityPattern dsp(state.relevant);
-        // ML's line detection needs every ghost node with all its
-        // components in the column map ("Incomplete ghost block detected"
-        // on 2 ranks otherwise): keep the (zero) couplings of constrained
-        // DoFs.
-        DoFTools::make_sparsity_pattern(
-          state.dof_handler,
-          dsp,
-          state.constraints,
-          prm.linear.type == parameters::LinearSolverType::iterative);
+        DoFTools::make_sparsity_pattern(state.dof_handler,
+                                        dsp,
+                                        state.constraints,
+                                        false);
         SparsityTools::distribute_sparsity_pattern(dsp,
                                                    state.owned,
                                                    state.comm,
@@ -65,14 +60,8 @@ namespace formsolve
       factor_reuse.reinit(state.owned, state.comm);
       holder.reinit(state.owned, state.comm);
       contact.reinit();
-
-      std::vector<std::vector<bool>> modes;
-      DoFTools::extract_constant_modes(state.dof_handler,
-                                       ComponentMask(dim, true),
-                                       modes);
-      linear_solver = std::make_unique<LinearSolver>(prm.linear,
-                                                     modes,
-                                                     prm.symmetric_tangent());
+      linear_solver =
+        create_linear_solver(prm.linear, prm.symmetric_tangent());
       linear_solver->time_phases(timer);
     }
 
@@ -296,13 +285,12 @@ namespace formsolve
       VectorType         rhs(residual);
       rhs *= -1.;
       const unsigned long factorised = linear_solver->factorisations();
-      if (linear_solver->needs_null_space())
-        linear_solver->set_null_space(rigid_body_modes(
-          state.mapping
-            ? static_cast<const Mapping<dim> &>(*state.mapping)
-            : static_cast<const Mapping<dim> &>(state.reference_mapping),
-          state.dof_handler,
-          state.owned));
+      if (prm.linear.condition_iterations > 0)
+        step_condition =
+          std::max(step_condition,
+                   estimate_condition(matrix,
+                                      rhs,
+                                      prm.linear.condition_iterations));
       // Bordered system (the holder under force control): the holder's
       // column K z = b with the same factors, in the same solve. The first
       // correction of a step comes from the secant tangent (dual reset),
@@ -341,8 +329,6 @@ namespace formsolve
         factor_reuse.factorised();
       n_factorisations += linear_solver->factorisations() - factorised;
       step_max_linear = std::max(step_max_linear, its);
-      step_condition =
-        std::max(step_condition, linear_solver->condition_estimate());
       state.constraints.distribute(dv);
       return its;
     }

@@ -85,16 +85,12 @@ expect mesh_too_large "Mesh/Planform refinements" "$cases/drawing.prm" --set "Me
 touch "$work/a-file"
 expect unwritable_output "Output/Output directory" "$base" --set "Output/Output directory=$work/a-file/results"
 # Linear solver settings that cannot work together.
-expect low_rank_amesos "Low-rank tolerance" "$base" --set "Linear solver/Low-rank tolerance=1e-8" \
-  --set "Linear solver/Direct solver=KLU"
 expect low_rank_refinement "Low-rank tolerance" "$base" --set "Linear solver/Low-rank tolerance=1e-8" \
   --set "Linear solver/Refinement steps=2"
 expect out_of_core_missing "Out-of-core directory" "$base" \
   --set "Linear solver/Out-of-core directory=$work/no-such-directory"
 expect out_of_core_file "Out-of-core directory" "$base" \
   --set "Linear solver/Out-of-core directory=$work/a-file"
-expect out_of_core_klu "Out-of-core directory" "$base" \
-  --set "Linear solver/Out-of-core directory=$work" --set "Linear solver/Direct solver=KLU"
 # Non-finite numbers, a truncated file, binary garbage as input.
 expect inf_stroke "Tools/Punch/Stroke" "$base" --set "Tools/Punch/Stroke=inf"
 expect nan_friction "Friction coefficient" "$base" --set "Tools/Die/Friction coefficient=nan"

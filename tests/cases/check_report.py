@@ -1,20 +1,64 @@
-"""The run report: report/report.md and every PNG it embeds exist and are
-non-empty PNG files, including the two rendered pictures."""
-import os, re, sys
+"""The run report: report/report.md says what history.csv says (peak punch
+force and its travel, the final minimum thickness and thinning, the largest
+penetration, steps, Newton iterations and cuts, the critical stroke), and
+every PNG it embeds, the two rendered pictures included, is a non-empty PNG
+file."""
+import csv, os, re, sys
 
-report = os.path.join(sys.argv[1], "report")
+run = sys.argv[1]
+report = os.path.join(run, "report")
 text = open(os.path.join(report, "report.md")).read()
+rows = list(csv.DictReader(open(os.path.join(run, "history.csv"))))
+col = lambda k: [float(r[k]) for r in rows]
+ok = True
+
+
+def check(what, got, expected, digits):
+    """got as printed with `digits` significant or decimal places."""
+    global ok
+    good = abs(got - expected) <= 0.51 * 10 ** (-digits) * (1 if digits > 0 else 1)
+    print(f"{what}: report {got}, history.csv {expected:.6g}: {'ok' if good else 'WRONG'}")
+    ok = ok and good
+
+
+def cell(name):
+    m = re.search(r"^\| " + re.escape(name) + r" \| (.*) \|$", text, re.M)
+    if not m:
+        raise SystemExit(f"report.md has no row '{name}'")
+    return m.group(1)
+
+
+force = col("punch_force")
+peak = max(range(len(rows)), key=lambda i: force[i])
+m = re.match(r"([-\d.]+) N at ([-\d.]+) mm", cell("peak punch force"))
+check("peak punch force (N)", float(m.group(1)), force[peak], 0)
+check("its punch travel (mm)", float(m.group(2)), col("force_travel")[peak], 2)
+m = re.match(r"([-\d.]+) mm \(thinning ([-\d.]+) %\)", cell("minimum thickness"))
+check("final minimum thickness (mm)", float(m.group(1)), col("min_thickness")[-1], 4)
+check("final thinning (%)", float(m.group(2)), col("max_thinning_percent")[-1], 1)
+got = float(cell("max penetration over the run").split()[0])
+expected = max(col("max_penetration"))
+good = abs(got / expected - 1) < 1e-2
+print(f"max penetration (mm): report {got}, history.csv {expected:.6g}: {'ok' if good else 'WRONG'}")
+ok = ok and good
+steps, newton, cuts = (int(v) for v in cell("steps, Newton iterations, time-step cuts").split(", "))
+check("steps", steps, len(rows), 0)
+check("Newton iterations", newton, sum(col("newton_iterations")), 0)
+check("time-step cuts", cuts, sum(col("cutbacks")), 0)
+oyane = max(col("max_oyane"))
+stroke = cell("critical stroke")
+good = ("no fracture" in stroke) == (oyane < 1)
+print(f"critical stroke: '{stroke}', largest Oyane I {oyane:.3g}: {'ok' if good else 'WRONG'}")
+ok = ok and good
+
 pictures = re.findall(r"!\[[^]]*\]\(([^)]+)\)", text)
 expected = {"force-travel.png", "thickness.png", "fld.png", "damage.png", "thinning.png", "penetration.png"}
-missing = expected - set(pictures)
-ok = not missing
+if expected - set(pictures):
+    print("not in report.md:", sorted(expected - set(pictures)))
+    ok = False
 for p in pictures:
     path = os.path.join(report, p)
     good = os.path.exists(path) and os.path.getsize(path) > 1000 and open(path, "rb").read(8) == b"\x89PNG\r\n\x1a\n"
     print(f"{p}: {'ok' if good else 'MISSING OR EMPTY'}")
     ok = ok and good
-if missing:
-    print("not in report.md:", sorted(missing))
-for key in ("peak punch force", "minimum thickness", "critical stroke", "max penetration"):
-    ok = ok and key in text
 sys.exit(0 if ok else 1)

@@ -13,7 +13,7 @@
 #include <formsolve/geometry/blank_mesh.h>
 #include <formsolve/model/cell_kinematics.h>
 #include <formsolve/solver/assembler.h>
-#include <formsolve/solver/linear_solver.h>
+#include <formsolve/solver/mumps_solver.h>
 #include <formsolve/solver/newton_solver.h>
 
 #include "check.h"
@@ -39,7 +39,7 @@ namespace
         , material(material_parameters())
         , kinematics(false)
         , assembler(material, kinematics, mapping, degree)
-        , linear(linear_parameters(), {}, true)
+        , linear(linear_parameters(), true)
     {
       parameters::Geometry g;
       g.model        = model::Model::full;
@@ -206,7 +206,7 @@ namespace
     solver::HistoryStorage<3>               history;
     solver::MatrixType                      matrix;
     VectorType                              residual, ghost;
-    solver::LinearSolver                    linear;
+    solver::MumpsSolver                     linear;
     double                                  scale = 0;
   };
 } // namespace

@@ -10,7 +10,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <formsolve/solver/assembler.h>
-#include <formsolve/solver/linear_solver.h>
+#include <formsolve/solver/mumps_solver.h>
 #include <formsolve/solver/newton_solver.h>
 #include <formsolve/state/state.h>
 
@@ -33,7 +33,7 @@ namespace
         : state(state)
         , assembler(assembler)
         , update(update)
-        , linear(parameters::LinearSolver(), {}, false)
+        , linear(parameters::LinearSolver(), false)
     {
       // The state's constraints (symmetry planes x = 0, y = 0) plus v_z = 0
       // at z = 0 and v_z = V at z = h.
@@ -130,7 +130,7 @@ namespace
     AffineConstraints<double>      bc, homogeneous;
     solver::MatrixType             matrix;
     solver::VectorType             residual;
-    solver::LinearSolver           linear;
+    solver::MumpsSolver            linear;
     double                         scale = 0;
   };
 } // namespace

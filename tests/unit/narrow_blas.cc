@@ -1,4 +1,4 @@
-// Narrow BLAS calls (app/narrow_blas.cc): sgemm_, dgemm_, strsm_ and dtrsm_
+// Narrow BLAS calls (preload/narrow_blas.cc): sgemm_, dgemm_, strsm_ and dtrsm_
 // with one or two columns, sent to GEMV and TRSV, must give what the BLAS
 // library's own functions give, for every transpose, both triangles, unit
 // and non-unit diagonals, alpha and beta (beta = 0 over a C that holds NaN),
@@ -10,7 +10,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <formsolve/app/narrow_blas.h>
+#include "narrow_blas.h"
 #include <formsolve/solver/mumps_direct.h>
 
 #include "check.h"

@@ -17,9 +17,7 @@ namespace formsolve
   {
     /// r -= f_contact and K += -df/dv for the active (and locked) pairs with
     /// factors @p epsilon, each multiplied by @p sign, into @p matrix and
-    /// @p residual where given; then compresses them. @p symmetrise: each
-    /// nodal stiffness enters as (K + K^T)/2 (the friction part of K is not
-    /// symmetric). The stiffness is condensed with @p constraints without
+    /// @p residual where given; then compresses them. The stiffness is condensed with @p constraints without
     /// entries on constrained diagonals (the body's keep those rows
     /// regular), so that @p sign = -1 with the same arguments takes out of
     /// the matrix, up to round-off, what +1 put in: the body tangent comes
@@ -31,7 +29,6 @@ namespace formsolve
                            const double                             v0,
                            const double                             dt,
                            const bool                               newton,
-                           const bool                               symmetrise,
                            const dealii::AffineConstraints<double> &constraints,
                            dealii::TrilinosWrappers::SparseMatrix  *matrix,
                            dealii::TrilinosWrappers::MPI::Vector   *residual,

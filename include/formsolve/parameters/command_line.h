@@ -18,6 +18,7 @@ namespace formsolve
       std::vector<std::pair<std::string, std::string>> overrides;
       bool                                             help             = false;
       bool                                             print_parameters = false;
+      bool                                             parameter_manual = false;
       bool                                             validate         = false;
       bool                                             resume           = false;
 

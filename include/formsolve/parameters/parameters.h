@@ -32,7 +32,7 @@ namespace formsolve
       /// Cross-subsection checks; throws with a message naming the entries.
       void validate() const;
       /// Whether the Newton tangent is symmetric: every enabled tool is
-      /// frictionless, or the friction tangent is symmetrised.
+      /// frictionless.
       bool symmetric_tangent() const;
     };
   } // namespace parameters

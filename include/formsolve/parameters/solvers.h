@@ -69,7 +69,6 @@ namespace formsolve
       Tangent tangent = Tangent::stress_velocity;
       /// Friction stiffness (K + K^T)/2: a symmetric tangent, at the price
       /// of an inexact Newton step under sliding friction.
-      bool              symmetrise_friction   = false;
       unsigned int      max_iterations        = 60;
       double            residual_tolerance    = 1e-5;
       double            correction_tolerance  = 1e-5;
@@ -95,17 +94,6 @@ namespace formsolve
       void        validate() const;
     };
 
-    enum class LinearSolverType
-    {
-      direct,
-      iterative
-    };
-    enum class DirectSolver
-    {
-      mumps,        // MUMPS's C interface (solver/mumps_direct.h)
-      amesos_mumps, // MUMPS through Amesos (unsymmetric, automatic order)
-      klu           // Amesos KLU (serial, gathered)
-    };
     /// MUMPS: how a tangent that is not symmetric (sliding friction) is
     /// factorised.
     enum class UnsymmetricFactors
@@ -119,70 +107,41 @@ namespace formsolve
       double_precision, // exact factors up to round-off
       single_precision  // float factors, GMRES preconditioned by them
     };
-    enum class IterativeSolver
-    {
-      gmres,
-      cg
-    };
 
-    /// Near null space given to ML.
-    enum class AmgNullSpace
-    {
-      translations,
-      rigid_body_modes
-    };
-    enum class AmgSmoother
-    {
-      chebyshev,
-      symmetric_gauss_seidel,
-      line_gauss_seidel // blocks along lines of nodes (through the thickness)
-    };
-
+    /// The linear solver (MUMPS, solver/mumps_solver.h).
     struct LinearSolver
     {
-      LinearSolverType type          = LinearSolverType::direct;
-      DirectSolver     direct_solver = DirectSolver::mumps;
-      /// MUMPS: LDL^T when the tangent is symmetric.
+      /// LDL^T when the tangent is symmetric.
       bool symmetric_factorisation = true;
-      /// MUMPS: the factors of an unsymmetric tangent.
+      /// The factors of an unsymmetric tangent.
       UnsymmetricFactors unsymmetric_factors = UnsymmetricFactors::lu;
-      /// GMRES iterations allowed with the factors of the symmetric part.
-      unsigned int    symmetric_part_iterations = 30;
-      bool            metis_order      = true; // else MUMPS's automatic (PORD)
-      unsigned int    refinement_steps = 0;    // MUMPS iterative refinement
-      IterativeSolver iterative_solver = IterativeSolver::gmres;
-      double          tolerance        = 1e-8;
-      unsigned int    max_iterations   = 2000;
-      AmgNullSpace    amg_null_space   = AmgNullSpace::rigid_body_modes;
-      AmgSmoother     amg_smoother     = AmgSmoother::chebyshev;
-      /// Iterative: a solve that does not converge is done by the direct
-      /// solver instead of failing.
-      bool         direct_fallback      = true;
-      unsigned int condition_iterations = 0; // Lanczos estimate, 0: off
-      /// Direct: GMRES iterations allowed with an older factorisation as
+      bool         metis_order          = true; // else MUMPS's automatic (PORD)
+      unsigned int refinement_steps     = 0;    // MUMPS iterative refinement
+      unsigned int condition_iterations = 0;    // Lanczos estimate, 0: off
+      /// GMRES iterations allowed with an older factorisation as
       /// preconditioner before refactorising; 0: factorise every matrix.
       unsigned int reuse_iterations = 0;
       double       reuse_tolerance  = 1e-10; // relative residual of that GMRES
       /// Largest |v - v_f|/|v| between the velocity of a new matrix and that
       /// of the factorised one for which reuse is tried (0: always tried).
       double reuse_velocity_change = 0;
-      /// MUMPS block low-rank dropping tolerance (-); 0: full-rank factors.
+      /// Block low-rank dropping tolerance (-); 0: full-rank factors.
       double low_rank_tolerance = 0;
       /// GMRES iterations allowed with the low-rank factors.
       unsigned int low_rank_iterations = 20;
-      /// MUMPS out-of-core factors in this directory; empty: in memory.
+      /// Out-of-core factors in this directory; empty: in memory.
       std::string out_of_core_directory;
-      /// MUMPS: single-precision factors as GMRES's preconditioner.
+      /// Single-precision factors as GMRES's preconditioner.
       FactorPrecision factor_precision = FactorPrecision::double_precision;
-      /// GMRES iterations allowed with single-precision factors.
-      unsigned int single_precision_iterations = 20;
-      /// BLAS-3 calls with one or two columns sent to BLAS-2
-      /// (app/narrow_blas.h).
-      bool narrow_blas_calls = true;
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);
       void        validate() const;
+
+    private:
+      static void declare_factors(ParameterHandler &prm);
+      static void declare_approximate_factors(ParameterHandler &prm);
+      static void declare_reuse(ParameterHandler &prm);
     };
   } // namespace parameters
 } // namespace formsolve

@@ -1,10 +1,10 @@
-// LinearSolver with two right-hand sides on one matrix: the body correction
+// MumpsSolver with two right-hand sides on one matrix: the body correction
 // and the blank holder's column of the bordered system (doc/theory.md
 // section 6a). A substitution reads the whole factor from memory, and that
 // is most of its cost: with MUMPS both GMRES solves run side by side and
 // each application of the factors serves both right-hand sides.
 #include <formsolve/solver/flexible_gmres.h>
-#include <formsolve/solver/linear_solver.h>
+#include <formsolve/solver/mumps_solver.h>
 
 #include <algorithm>
 
@@ -14,25 +14,16 @@ namespace formsolve
   {
     using namespace dealii;
 
-    unsigned int
-    LinearSolver::solve_pair(const TrilinosWrappers::SparseMatrix &A,
-                             TrilinosWrappers::MPI::Vector        &x,
-                             const TrilinosWrappers::MPI::Vector  &b,
-                             TrilinosWrappers::MPI::Vector        &y,
-                             const TrilinosWrappers::MPI::Vector  &c,
-                             const bool                            may_reuse)
+    unsigned int MumpsSolver::solve_pair(const Matrix &A,
+                                         Vector       &x,
+                                         const Vector &b,
+                                         Vector       &y,
+                                         const Vector &c,
+                                         const bool    may_reuse)
     {
-      if (prm.type != parameters::LinearSolverType::direct ||
-          prm.direct_solver != parameters::DirectSolver::mumps)
-        {
-          const unsigned int its = solve(A, x, b, may_reuse);
-          return its + solve_again(y, c);
-        }
-      estimate_condition(A, b);
       try_reuse   = may_reuse;
       last_matrix = &A;
-      last_direct = true;
-      // The same decisions as solve_direct() and solve_again() make for the
+      // The same decisions as solve() makes for each of the
       // two solves one after the other: the stored factors first, if
       // allowed; a solve that fails on them gets the new factorisation.
       bool         left[2] = {true, true};
@@ -65,10 +56,10 @@ namespace formsolve
     }
 
     unsigned int
-    LinearSolver::apply_current_factors(TrilinosWrappers::MPI::Vector       &x,
-                                        const TrilinosWrappers::MPI::Vector &b,
-                                        TrilinosWrappers::MPI::Vector       &y,
-                                        const TrilinosWrappers::MPI::Vector &c)
+    MumpsSolver::apply_current_factors(Vector       &x,
+                                        const Vector &b,
+                                        Vector       &y,
+                                        const Vector &c)
     {
       if (exact_factors())
         {
@@ -86,28 +77,28 @@ namespace formsolve
       return its;
     }
 
-    unsigned int LinearSolver::gmres_pair_with_factors(
-      const TrilinosWrappers::SparseMatrix &A,
-      TrilinosWrappers::MPI::Vector        &x,
-      const TrilinosWrappers::MPI::Vector  &b,
-      TrilinosWrappers::MPI::Vector        &y,
-      const TrilinosWrappers::MPI::Vector  &c,
+    unsigned int MumpsSolver::gmres_pair_with_factors(
+      const Matrix &A,
+      Vector        &x,
+      const Vector  &b,
+      Vector        &y,
+      const Vector  &c,
       const unsigned int                    max_iterations,
       bool (&converged)[2])
     {
       // As gmres_with_factors(), for both.
       const double relative = std::max(prm.reuse_tolerance, forcing);
       const auto   results  = flexible_gmres_pair(
-        [&A](TrilinosWrappers::MPI::Vector       &dst,
-             const TrilinosWrappers::MPI::Vector &src) { A.vmult(dst, src); },
-        [this](TrilinosWrappers::MPI::Vector       &dst,
-               const TrilinosWrappers::MPI::Vector &src) {
+        [&A](Vector       &dst,
+             const Vector &src) { A.vmult(dst, src); },
+        [this](Vector       &dst,
+               const Vector &src) {
           substitute(dst, src);
         },
-        [this](TrilinosWrappers::MPI::Vector       &dst0,
-               const TrilinosWrappers::MPI::Vector &src0,
-               TrilinosWrappers::MPI::Vector       &dst1,
-               const TrilinosWrappers::MPI::Vector &src1) {
+        [this](Vector       &dst0,
+               const Vector &src0,
+               Vector       &dst1,
+               const Vector &src1) {
           substitute(dst0, src0, dst1, src1);
         },
         x,

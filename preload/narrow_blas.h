@@ -4,12 +4,14 @@
 // SkylakeX kernels have a small-matrix path. On AVX2 (AMD EPYC, Zen 3) sgemm
 // with one column took 5x the time of sgemv at 128-512 rows and strsm 1.5-3x
 // that of strsv, and a substitution on the shipped 3-D cup 5.3 ms against
-// 3.8 ms (doc/performance.md, "Narrow BLAS calls"). source/app/narrow_blas.cc
-// defines the Fortran BLAS symbols sgemm_, dgemm_, strsm_ and dtrsm_: the core
-// library is the executable's first library, so its definitions are the ones
-// every caller in the process (MUMPS, deal.II, Trilinos) reaches. A call with
+// 3.8 ms (doc/performance.md, "Narrow BLAS calls"). preload/narrow_blas.cc
+// is a library of its own, libformsolve_narrow_blas.so, outside the core: it
+// defines the Fortran BLAS symbols sgemm_, dgemm_, strsm_ and dtrsm_, and a
+// run that loads it first (LD_PRELOAD, as scripts/formsolve-run does) sends
+// every caller in the process (MUMPS, deal.II, Trilinos) to them. A call with
 // at most two columns goes column by column to GEMV or TRSV; every other call
-// passes unchanged to the BLAS library's own function.
+// passes unchanged to the BLAS library's own function. Without it, every call
+// goes to the BLAS library as made.
 #pragma once
 
 namespace formsolve
@@ -47,8 +49,7 @@ namespace formsolve
                       Real *,
                       const int *);
 
-    /// Whether narrow calls go to BLAS-2 (Linear solver/Narrow BLAS calls;
-    /// on until set).
+    /// Whether narrow calls go to BLAS-2 (on until set; for tests).
     void set_narrow_blas(const bool on);
     bool narrow_blas();
 
@@ -58,7 +59,9 @@ namespace formsolve
   } // namespace app
 } // namespace formsolve
 
-// The core library's definitions.
+// The library's definitions, and the count of narrowed calls by a name that
+// a run can look up to tell whether the library is loaded.
+extern "C" unsigned long formsolve_narrowed_blas_calls();
 extern "C" formsolve::app::Gemm<float>  sgemm_;
 extern "C" formsolve::app::Gemm<double> dgemm_;
 extern "C" formsolve::app::Trsm<float>  strsm_;

@@ -1,8 +1,8 @@
-// The BLAS symbols of include/formsolve/app/narrow_blas.h. The callers are
+// The BLAS symbols of preload/narrow_blas.h. The callers are
 // Fortran (MUMPS) and C/C++ (deal.II, Trilinos); the hidden string lengths of
 // Fortran callers are not read, as the BLAS library's C functions do not
 // read them.
-#include <formsolve/app/narrow_blas.h>
+#include "narrow_blas.h"
 
 #include <dlfcn.h>
 
@@ -60,7 +60,7 @@ namespace
   std::atomic<bool>          enabled{true};
   std::atomic<unsigned long> narrowed{0};
   /// The widest call sent to BLAS-2 (two right-hand sides at once: the
-  /// bordered system of solver/linear_solver_pair.cc).
+  /// bordered system of solver/mumps_solver_pair.cc).
   constexpr int max_columns = 2;
 
   template <typename Real>
@@ -87,7 +87,7 @@ namespace
     static constexpr auto        scal = dscal_;
   };
 
-  /// The definition of @p name that the core library's own one hides.
+  /// The definition of @p name that this library's own one hides.
   template <typename Function>
   Function next_definition(const char *name)
   {
@@ -95,8 +95,8 @@ namespace
     if (f == nullptr)
       {
         std::fprintf(stderr,
-                     "formsolve: no BLAS library defines %s after the core "
-                     "library (narrow BLAS calls)\n",
+                     "formsolve: no BLAS library defines %s after "
+                     "libformsolve_narrow_blas (narrow BLAS calls)\n",
                      name);
         std::abort();
       }
@@ -273,3 +273,8 @@ namespace formsolve
     }
   } // namespace app
 } // namespace formsolve
+
+unsigned long formsolve_narrowed_blas_calls()
+{
+  return narrowed;
+}

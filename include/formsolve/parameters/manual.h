@@ -1,0 +1,17 @@
+// The parameter manual (doc/parameters.md), generated from the declarations
+// so that it cannot drift from them: `formsolve --parameter-manual`.
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <ostream>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    /// Every subsection of @p prm as a Markdown table: entry, default, what
+    /// it accepts, and its documentation (units included there).
+    void write_manual(const dealii::ParameterHandler &prm, std::ostream &out);
+  } // namespace parameters
+} // namespace formsolve
