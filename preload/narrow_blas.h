@@ -61,7 +61,7 @@ namespace formsolve
 
 // The library's definitions, and the count of narrowed calls by a name that
 // a run can look up to tell whether the library is loaded.
-extern "C" unsigned long formsolve_narrowed_blas_calls();
+extern "C" unsigned long                formsolve_narrowed_blas_calls();
 extern "C" formsolve::app::Gemm<float>  sgemm_;
 extern "C" formsolve::app::Gemm<double> dgemm_;
 extern "C" formsolve::app::Trsm<float>  strsm_;

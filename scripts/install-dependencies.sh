@@ -13,6 +13,7 @@ packages=(
   python3-matplotlib                # benchmark charts, run report
   xvfb                              # offscreen X server for the report's VTK pictures
   valgrind                          # memcheck test of a tiny case
+  clang-format                      # the format check of scripts/run-tests.sh
 )
 missing=()
 for p in "${packages[@]}"; do

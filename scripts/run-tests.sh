@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # One command from a fresh Debian 12 machine to a tested build: install
-# dependencies, build Release and run the whole ctest suite, then build Debug
+# dependencies, check the format (.clang-format) and the layers of the
+# source areas, build Release and run the whole ctest suite, then build Debug
 # (deal.II's debug library: every Assert on) and run its fast subset
 # (ctest label "debug"). FORMSOLVE_SKIP_DEBUG=1 leaves the Debug part out.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/install-dependencies.sh"
+bash "$root/scripts/format.sh" --check
+/usr/bin/python3 "$root/scripts/check-layers.py"
 bash "$root/scripts/build.sh"
 # The BLAS kernels formsolve-run would choose (OpenBLAS may fall back to
 # Prescott's on a virtual machine): the same results, faster.

@@ -23,6 +23,15 @@ namespace formsolve
     void Contact::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
+      declare_strategy(prm);
+      declare_adaptive(prm);
+      declare_passes(prm);
+      prm.leave_subsection();
+    }
+
+    /// The strategy and the penetration it aims at or bounds.
+    void Contact::declare_strategy(ParameterHandler &prm)
+    {
       prm.declare_entry(
         "Penalty strategy",
         "adaptive-strict",
@@ -54,6 +63,11 @@ namespace formsolve
                         Double(),
                         "delta (mm): penetration the adaptive strategies aim "
                         "at (adaptive) or bound (adaptive-strict).");
+    }
+
+    /// The estimate of the adaptive factors.
+    void Contact::declare_adaptive(ParameterHandler &prm)
+    {
       prm.declare_entry("Lower bound",
                         "1e-3",
                         Double(0),
@@ -111,6 +125,11 @@ namespace formsolve
         "(pairs without one start from 'Penalty factor'); the estimate runs "
         "at convergence, for the next solve, and at adaptive-strict's "
         "correction within a solve. Measured in doc/convergence.md.");
+    }
+
+    /// Passes over a step, friction and the search for pairs.
+    void Contact::declare_passes(ParameterHandler &prm)
+    {
       prm.declare_entry("Max status flips",
                         "4",
                         Integer(1),
@@ -146,26 +165,25 @@ namespace formsolve
         Double(),
         "Sheet nodes farther than this from a tool (mm) are not "
         "checked for contact with it in the current step.");
-      prm.leave_subsection();
     }
 
     void Contact::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
-      penalty_strategy         = prm.get("Penalty strategy");
-      al_penalty               = prm.get("Augmented Lagrangian penalty");
-      penalty_factor           = prm.get_double("Penalty factor");
-      allowed_penetration      = prm.get_double("Allowed penetration");
-      lower_bound              = prm.get_double("Lower bound");
-      upper_bound              = prm.get_double("Upper bound");
-      freeze                   = prm.get_bool("Freeze factors");
-      factor_update = factor_update_names.parse(prm.get("Factor update"));
-      adaptive_estimate        = estimate_names.parse(prm.get("Adaptive estimate"));
-      damping                  = prm.get_double("Damping");
-      target_fraction          = prm.get_double("Target fraction");
-      max_status_flips         = prm.get_integer("Max status flips");
-      max_strict_passes        = prm.get_integer("Max strict passes");
-      strict_check_residual    = prm.get_double("Strict check residual");
+      penalty_strategy    = prm.get("Penalty strategy");
+      al_penalty          = prm.get("Augmented Lagrangian penalty");
+      penalty_factor      = prm.get_double("Penalty factor");
+      allowed_penetration = prm.get_double("Allowed penetration");
+      lower_bound         = prm.get_double("Lower bound");
+      upper_bound         = prm.get_double("Upper bound");
+      freeze              = prm.get_bool("Freeze factors");
+      factor_update       = factor_update_names.parse(prm.get("Factor update"));
+      adaptive_estimate   = estimate_names.parse(prm.get("Adaptive estimate"));
+      damping             = prm.get_double("Damping");
+      target_fraction     = prm.get_double("Target fraction");
+      max_status_flips    = prm.get_integer("Max status flips");
+      max_strict_passes   = prm.get_integer("Max strict passes");
+      strict_check_residual = prm.get_double("Strict check residual");
       regularisation_velocity =
         prm.get_double("Friction regularisation velocity");
       search_distance = prm.get_double("Search distance");

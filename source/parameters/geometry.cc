@@ -10,10 +10,10 @@ namespace formsolve
 
     namespace
     {
-      const Choice<BlankShape> blank_shape_names{
-        {"round", BlankShape::round},
-        {"rectangle", BlankShape::rectangle},
-        {"gmsh", BlankShape::gmsh}};
+      const Choice<BlankShape> blank_shape_names{{"round", BlankShape::round},
+                                                 {"rectangle",
+                                                  BlankShape::rectangle},
+                                                 {"gmsh", BlankShape::gmsh}};
     } // namespace
 
     void Geometry::declare(ParameterHandler &prm)
@@ -68,13 +68,13 @@ namespace formsolve
     void Geometry::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Geometry");
-      model            = model::parse_model(prm.get("Model"));
-      blank_shape = blank_shape_names.parse(prm.get("Blank shape"));
-      blank_diameter   = prm.get_double("Blank diameter");
-      blank_length     = prm.get_double("Blank length");
-      blank_width      = prm.get_double("Blank width");
-      thickness        = prm.get_double("Thickness");
-      mesh_file        = prm.get("Mesh file");
+      model          = model::parse_model(prm.get("Model"));
+      blank_shape    = blank_shape_names.parse(prm.get("Blank shape"));
+      blank_diameter = prm.get_double("Blank diameter");
+      blank_length   = prm.get_double("Blank length");
+      blank_width    = prm.get_double("Blank width");
+      thickness      = prm.get_double("Thickness");
+      mesh_file      = prm.get("Mesh file");
       prm.leave_subsection();
     }
 

@@ -58,7 +58,8 @@ namespace formsolve
         "Unsymmetric tangent",
         "LU",
         Selection(unsymmetric_names.pattern()),
-        "A tangent K that is not symmetric (sliding friction). LU: factorise K (exact factors, solved "
+        "A tangent K that is not symmetric (sliding friction). LU: factorise K "
+        "(exact factors, solved "
         "by one substitution). symmetric part: factorise LDL^T of the "
         "symmetric part (K + K^T)/2 (about 0.6x the memory of LU and faster) "
         "and solve K by GMRES preconditioned by it, to Reuse tolerance "
@@ -160,9 +161,10 @@ namespace formsolve
     {
       prm.enter_subsection("Linear solver");
       symmetric_factorisation = prm.get_bool("Symmetric factorisation");
-      unsymmetric_factors     = unsymmetric_names.parse(prm.get("Unsymmetric tangent"));
-      metis_order             = ordering_names.parse(prm.get("Ordering"));
-      refinement_steps        = prm.get_integer("Refinement steps");
+      unsymmetric_factors =
+        unsymmetric_names.parse(prm.get("Unsymmetric tangent"));
+      metis_order           = ordering_names.parse(prm.get("Ordering"));
+      refinement_steps      = prm.get_integer("Refinement steps");
       condition_iterations  = prm.get_integer("Condition estimate iterations");
       reuse_iterations      = prm.get_integer("Reuse factorisation iterations");
       reuse_tolerance       = prm.get_double("Reuse tolerance");
@@ -170,7 +172,7 @@ namespace formsolve
       low_rank_tolerance    = prm.get_double("Low-rank tolerance");
       low_rank_iterations   = prm.get_integer("Low-rank iterations");
       out_of_core_directory = prm.get("Out-of-core directory");
-      factor_precision      = precision_names.parse(prm.get("Factor precision"));
+      factor_precision = precision_names.parse(prm.get("Factor precision"));
       prm.leave_subsection();
     }
 

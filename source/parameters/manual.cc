@@ -22,7 +22,8 @@ namespace formsolve
         for (std::size_t i = 0; i < s.size(); ++i)
           if (s[i] == '_' && i + 2 < s.size())
             {
-              d += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
+              d +=
+                static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
               i += 2;
             }
           else
@@ -35,18 +36,21 @@ namespace formsolve
       {
         std::string c;
         for (const char ch : s)
-          c += ch == '|' ? std::string("\\|") : ch == '\n' ? std::string(" ") : std::string(1, ch);
+          c += ch == '|'    ? std::string("\\|")
+               : ch == '\n' ? std::string(" ")
+                            : std::string(1, ch);
         return c;
       }
 
       /// "Double 0...MAX_DOUBLE (inclusive)" -> "real >= 0", and the like.
       std::string range(const std::string &p)
       {
-        const auto space = p.find(' ');
-        std::string kind = p.substr(0, space);
+        const auto  space = p.find(' ');
+        std::string kind  = p.substr(0, space);
         if (kind == "Bool")
           return "`true` or `false`";
-        if ((kind != "Double" && kind != "Integer") || space == std::string::npos)
+        if ((kind != "Double" && kind != "Integer") ||
+            space == std::string::npos)
           return p;
         std::string rest = p.substr(space + 1);
         if (rest.rfind("range ", 0) == 0)
@@ -57,9 +61,9 @@ namespace formsolve
           return p;
         const std::string lo = rest.substr(0, dots),
                           hi = rest.substr(dots + 3, end - dots - 3);
-        const bool open_lo = lo == "-MAX_DOUBLE" || lo == "-2147483648",
-                   open_hi = hi == "MAX_DOUBLE" || hi == "2147483647";
-        kind = kind == "Double" ? "real" : "integer";
+        const bool open_lo   = lo == "-MAX_DOUBLE" || lo == "-2147483648",
+                   open_hi   = hi == "MAX_DOUBLE" || hi == "2147483647";
+        kind                 = kind == "Double" ? "real" : "integer";
         if (open_lo && open_hi)
           return kind;
         if (open_hi)
@@ -80,7 +84,7 @@ namespace formsolve
         const std::string selection = "Selection ";
         if (p.rfind(selection, 0) == 0)
           {
-            std::string names = p.substr(selection.size()), out;
+            std::string        names = p.substr(selection.size()), out;
             std::istringstream in(names);
             for (std::string name; std::getline(in, name, '|');)
               out += (out.empty() ? "`" : ", `") + name + "`";
@@ -89,7 +93,9 @@ namespace formsolve
         return cell(range(p));
       }
 
-      void write_section(const Tree &tree, const std::string &path, std::ostream &out)
+      void write_section(const Tree        &tree,
+                         const std::string &path,
+                         std::ostream      &out)
       {
         bool header = false;
         for (const auto &[key, child] : tree)
@@ -99,16 +105,20 @@ namespace formsolve
                 out << "\n## " << path << "\n\n"
                     << "| entry | default | accepts | meaning |\n"
                     << "|---|---|---|---|\n";
-              header = true;
+              header                  = true;
               const std::string value = child.get<std::string>("default_value");
               out << "| `" << demangle(key) << "` | "
-                  << (value.empty() ? "(empty)" : "`" + cell(value) + "`") << " | "
-                  << accepts(child.get<std::string>("pattern_description")) << " | "
-                  << cell(child.get<std::string>("documentation")) << " |\n";
+                  << (value.empty() ? "(empty)" : "`" + cell(value) + "`")
+                  << " | "
+                  << accepts(child.get<std::string>("pattern_description"))
+                  << " | " << cell(child.get<std::string>("documentation"))
+                  << " |\n";
             }
         for (const auto &[key, child] : tree)
           if (!child.get_child_optional("value"))
-            write_section(child, (path.empty() ? "" : path + "/") + demangle(key), out);
+            write_section(child,
+                          (path.empty() ? "" : path + "/") + demangle(key),
+                          out);
       }
     } // namespace
 

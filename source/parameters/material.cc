@@ -13,9 +13,9 @@ namespace formsolve
 
     namespace
     {
-      const Choice<RigidZone> rigid_zone_names{
-        {"smooth", RigidZone::smooth},
-        {"piecewise", RigidZone::piecewise}};
+      const Choice<RigidZone> rigid_zone_names{{"smooth", RigidZone::smooth},
+                                               {"piecewise",
+                                                RigidZone::piecewise}};
       const Choice<FractureCriterion> fracture_names{
         {"oyane", FractureCriterion::oyane},
         {"cockcroft-latham", FractureCriterion::cockcroft_latham},
@@ -163,12 +163,12 @@ namespace formsolve
       rate_sensitivity      = prm.get_double("Rate sensitivity");
       reference_strain_rate = prm.get_double("Reference strain rate");
       limiting_strain_rate  = prm.get_double("Limiting strain rate");
-      rigid_zone         = rigid_zone_names.parse(prm.get("Rigid zone"));
-      volumetric_penalty = prm.get_double("Volumetric penalty");
-      oyane_a            = prm.get_double("Oyane a");
-      oyane_b            = prm.get_double("Oyane b");
-      cockcroft_latham   = prm.get_double("Cockcroft-Latham critical value");
-      fracture = fracture_names.parse(prm.get("Fracture criterion"));
+      rigid_zone            = rigid_zone_names.parse(prm.get("Rigid zone"));
+      volumetric_penalty    = prm.get_double("Volumetric penalty");
+      oyane_a               = prm.get_double("Oyane a");
+      oyane_b               = prm.get_double("Oyane b");
+      cockcroft_latham      = prm.get_double("Cockcroft-Latham critical value");
+      fracture            = fracture_names.parse(prm.get("Fracture criterion"));
       forming_limit_table = parse_table(prm.get("Forming limit table"));
       safety_margin       = prm.get_double("Safety margin");
       prm.leave_subsection();

@@ -97,15 +97,14 @@ namespace formsolve
     void MeshRefinement::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Mesh refinement");
-      interval        = prm.get_integer("Interval");
-      punch_level     = prm.get_integer("Punch level");
-      die_level       = prm.get_integer("Die level");
-      holder_level    = prm.get_integer("Blank holder level");
-      band_width      = prm.get_double("Band width");
-      coarsen_factor  = prm.get_double("Coarsening factor");
-      shape_tolerance = prm.get_double("Coarsening shape tolerance");
-      indicator =
-        indicator_names.parse(prm.get("Indicator"));
+      interval         = prm.get_integer("Interval");
+      punch_level      = prm.get_integer("Punch level");
+      die_level        = prm.get_integer("Die level");
+      holder_level     = prm.get_integer("Blank holder level");
+      band_width       = prm.get_double("Band width");
+      coarsen_factor   = prm.get_double("Coarsening factor");
+      shape_tolerance  = prm.get_double("Coarsening shape tolerance");
+      indicator        = indicator_names.parse(prm.get("Indicator"));
       indicator_level  = prm.get_integer("Indicator level");
       refine_fraction  = prm.get_double("Refine fraction");
       coarsen_fraction = prm.get_double("Coarsen fraction");

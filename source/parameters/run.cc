@@ -98,7 +98,7 @@ namespace formsolve
       std::pair<double, std::string> memory_per_dof(const Run &run)
       {
         const LinearSolver &l = run.linear;
-        const bool ldlt =
+        const bool          ldlt =
           l.symmetric_factorisation &&
           (run.symmetric_tangent() ||
            l.unsymmetric_factors == UnsymmetricFactors::symmetric_part);

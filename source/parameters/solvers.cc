@@ -16,9 +16,9 @@ namespace formsolve
         {"stroke", EndOfRun::stroke},
         {"holder release", EndOfRun::holder_release},
         {"draw-through", EndOfRun::draw_through}};
-      const Choice<Tangent> tangent_names{
-        {"newton", Tangent::newton},
-        {"stress-velocity", Tangent::stress_velocity}};
+      const Choice<Tangent>           tangent_names{{"newton", Tangent::newton},
+                                          {"stress-velocity",
+                                                     Tangent::stress_velocity}};
       const Choice<CorrectionMeasure> correction_measure_names{
         {"contraction", CorrectionMeasure::contraction},
         {"last correction", CorrectionMeasure::last}};
@@ -99,7 +99,7 @@ namespace formsolve
       easy_iterations   = prm.get_integer("Easy step iterations");
       regrowth_steps    = prm.get_integer("Regrowth after steps");
       max_cutbacks      = prm.get_integer("Max cutbacks");
-      end_of_run = end_of_run_names.parse(prm.get("End of run"));
+      end_of_run        = end_of_run_names.parse(prm.get("End of run"));
       prm.leave_subsection();
     }
 
@@ -117,6 +117,15 @@ namespace formsolve
     void NonlinearSolver::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Nonlinear solver");
+      declare_convergence(prm);
+      declare_iterations(prm);
+      declare_first_step(prm);
+      prm.leave_subsection();
+    }
+
+    /// The tangent and when a solve has converged.
+    void NonlinearSolver::declare_convergence(ParameterHandler &prm)
+    {
       prm.declare_entry(
         "Tangent",
         "stress-velocity",
@@ -172,6 +181,12 @@ namespace formsolve
         "(-). "
         "0: always to Reuse tolerance. A solve with fresh exact factors is "
         "exact whatever this is.");
+    }
+
+    /// How an iteration starts and moves: predictor, line search, deferred
+    /// tangent, Picard.
+    void NonlinearSolver::declare_iterations(ParameterHandler &prm)
+    {
       prm.declare_entry(
         "Predictor",
         "keep contact",
@@ -232,6 +247,11 @@ namespace formsolve
         "Print one line per nonlinear iteration: residual, "
         "correction, line-search factor, contact-set changes with the "
         "pairs each tool closed (+) and opened (-).");
+    }
+
+    /// Where the first step's Newton starts.
+    void NonlinearSolver::declare_first_step(ParameterHandler &prm)
+    {
       prm.declare_entry(
         "First step start",
         "coarser mesh",
@@ -257,26 +277,27 @@ namespace formsolve
         "the coarse solution bends the sheet over the punch nose too "
         "differently to be a good start (measured: 1.5 thicknesses helps, "
         "3 hurts).");
-      prm.leave_subsection();
     }
 
     void NonlinearSolver::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Nonlinear solver");
-      tangent                = tangent_names.parse(prm.get("Tangent"));
-      max_iterations         = prm.get_integer("Max iterations");
-      residual_tolerance     = prm.get_double("Residual tolerance");
-      correction_tolerance   = prm.get_double("Correction tolerance");
-      forcing                = prm.get_double("Forcing");
-      correction_measure     = correction_measure_names.parse(prm.get("Correction measure"));
-      predictor              = predictor_names.parse(prm.get("Predictor"));
-      max_line_search_steps  = prm.get_integer("Max line search steps");
-      line_search_memory     = prm.get_integer("Line search memory");
-      deferred_tangent       = prm.get_bool("Deferred tangent");
-      picard_iterations      = prm.get_integer("Picard iterations");
-      picard_fallback        = prm.get_bool("Picard fallback");
-      log_iterations         = prm.get_bool("Log iterations");
-      first_step_start       = first_step_start_names.parse(prm.get("First step start"));
+      tangent              = tangent_names.parse(prm.get("Tangent"));
+      max_iterations       = prm.get_integer("Max iterations");
+      residual_tolerance   = prm.get_double("Residual tolerance");
+      correction_tolerance = prm.get_double("Correction tolerance");
+      forcing              = prm.get_double("Forcing");
+      correction_measure =
+        correction_measure_names.parse(prm.get("Correction measure"));
+      predictor             = predictor_names.parse(prm.get("Predictor"));
+      max_line_search_steps = prm.get_integer("Max line search steps");
+      line_search_memory    = prm.get_integer("Line search memory");
+      deferred_tangent      = prm.get_bool("Deferred tangent");
+      picard_iterations     = prm.get_integer("Picard iterations");
+      picard_fallback       = prm.get_bool("Picard fallback");
+      log_iterations        = prm.get_bool("Log iterations");
+      first_step_start =
+        first_step_start_names.parse(prm.get("First step start"));
       coarse_cell_size_limit = prm.get_double("Coarse cell size limit");
       prm.leave_subsection();
     }

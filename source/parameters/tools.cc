@@ -10,12 +10,13 @@ namespace formsolve
 
     namespace
     {
-      const Choice<ToolShape> shape_names{
-        {"round", ToolShape::round},
-        {"rounded rectangle", ToolShape::rounded_rectangle},
-        {"flat", ToolShape::flat}};
+      const Choice<ToolShape>     shape_names{{"round", ToolShape::round},
+                                          {"rounded rectangle",
+                                               ToolShape::rounded_rectangle},
+                                          {"flat", ToolShape::flat}};
       const Choice<HolderControl> control_names{{"gap", HolderControl::gap},
-                                                {"force", HolderControl::force}};
+                                                {"force",
+                                                 HolderControl::force}};
     } // namespace
 
     void Tool::declare(ParameterHandler &prm, const Tool &d)
@@ -86,7 +87,7 @@ namespace formsolve
     void Tool::parse(ParameterHandler &prm)
     {
       enabled              = prm.get_bool("Enabled");
-      shape = shape_names.parse(prm.get("Shape"));
+      shape                = shape_names.parse(prm.get("Shape"));
       diameter             = prm.get_double("Diameter");
       length               = prm.get_double("Length");
       width                = prm.get_double("Width");

@@ -47,8 +47,7 @@ namespace formsolve
                    state.tools,
                    geometry::initial_mesh_level(run.mesh))
         , sheet(run)
-    {
-    }
+    {}
 
     template <int dim>
     bool TimeLoop<dim>::adapt()

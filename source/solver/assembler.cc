@@ -21,6 +21,31 @@ namespace formsolve
     using model::CellKinematics;
     using model::ShapeStrain;
 
+    namespace
+    {
+      /// The cell's K and r into the system: K by position where @p scatter
+      /// maps the cell, else condensed with the constraints as r is.
+      template <int dim>
+      void add_cell(const unsigned int                          index,
+                    const FullMatrix<double>                   &K,
+                    const Vector<double>                       &r,
+                    const std::vector<types::global_dof_index> &dofs,
+                    const AffineConstraints<double>            &constraints,
+                    MatrixType                                 *matrix,
+                    VectorType                                 &residual,
+                    const CellScatter<dim>                     *scatter)
+      {
+        if (matrix && scatter && scatter->maps(index))
+          {
+            scatter->add(index, K, *matrix);
+            constraints.distribute_local_to_global(r, dofs, residual);
+          }
+        else if (matrix)
+          constraints.distribute_local_to_global(K, r, dofs, *matrix, residual);
+        else
+          constraints.distribute_local_to_global(r, dofs, residual);
+      }
+    } // namespace
 
     template <int dim>
     Assembler<dim>::Assembler(const material::RigidViscoplastic &material,
@@ -140,19 +165,14 @@ namespace formsolve
               tangent.finish(K);
             f_int2 += r.norm_sqr();
             cell->get_dof_indices(dofs);
-            if (matrix && scatter && scatter->maps(cell->active_cell_index()))
-              {
-                scatter->add(cell->active_cell_index(), K, *matrix);
-                constraints.distribute_local_to_global(r, dofs, residual);
-              }
-            else if (matrix)
-              constraints.distribute_local_to_global(K,
-                                                     r,
-                                                     dofs,
-                                                     *matrix,
-                                                     residual);
-            else
-              constraints.distribute_local_to_global(r, dofs, residual);
+            add_cell(cell->active_cell_index(),
+                     K,
+                     r,
+                     dofs,
+                     constraints,
+                     matrix,
+                     residual,
+                     scatter);
           }
 
       if (matrix)

@@ -19,8 +19,9 @@ namespace formsolve
       // after a fixed number of steps (convergence is not the point here).
       SolverControl control(iterations, 0., false, false);
       SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-      cg.connect_condition_number_slot(
-        [&condition](const double c) { condition = c; }, false);
+      cg.connect_condition_number_slot([&condition](
+                                         const double c) { condition = c; },
+                                       false);
       TrilinosWrappers::MPI::Vector y(b);
       y = 0;
       try

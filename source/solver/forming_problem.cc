@@ -4,8 +4,8 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <formsolve/model/dimensions.h>
-#include <formsolve/solver/forming_problem.h>
 #include <formsolve/solver/condition_estimate.h>
+#include <formsolve/solver/forming_problem.h>
 
 #include <cmath>
 #include <sstream>
@@ -60,8 +60,7 @@ namespace formsolve
       factor_reuse.reinit(state.owned, state.comm);
       holder.reinit(state.owned, state.comm);
       contact.reinit();
-      linear_solver =
-        create_linear_solver(prm.linear, prm.symmetric_tangent());
+      linear_solver = create_linear_solver(prm.linear, prm.symmetric_tangent());
       linear_solver->time_phases(timer);
     }
 
@@ -286,11 +285,9 @@ namespace formsolve
       rhs *= -1.;
       const unsigned long factorised = linear_solver->factorisations();
       if (prm.linear.condition_iterations > 0)
-        step_condition =
-          std::max(step_condition,
-                   estimate_condition(matrix,
-                                      rhs,
-                                      prm.linear.condition_iterations));
+        step_condition = std::max(
+          step_condition,
+          estimate_condition(matrix, rhs, prm.linear.condition_iterations));
       // Bordered system (the holder under force control): the holder's
       // column K z = b with the same factors, in the same solve. The first
       // correction of a step comes from the secant tangent (dual reset),

@@ -17,8 +17,7 @@ namespace formsolve
       return std::make_unique<MumpsSolver>(p, symmetric);
     }
 
-    MumpsSolver::MumpsSolver(const parameters::LinearSolver &p,
-                             const bool                      sym)
+    MumpsSolver::MumpsSolver(const parameters::LinearSolver &p, const bool sym)
         : prm(p)
         , symmetric(sym)
     {}
@@ -88,8 +87,8 @@ namespace formsolve
       const auto            t = phase(timer, "linear solve: analysis");
       MumpsDirect::Settings settings;
       settings.symmetric_part =
-        !symmetric &&
-        prm.unsymmetric_factors == parameters::UnsymmetricFactors::symmetric_part;
+        !symmetric && prm.unsymmetric_factors ==
+                        parameters::UnsymmetricFactors::symmetric_part;
       settings.symmetric =
         prm.symmetric_factorisation && (symmetric || settings.symmetric_part);
       settings.metis_order           = prm.metis_order;
@@ -162,8 +161,8 @@ namespace formsolve
       AssertThrow(false,
                   ExcMessage("Linear solver: GMRES with the " + which +
                              "factors did not reach Reuse tolerance within " +
-                             std::to_string(limit) + " iterations (" +
-                             remedy + ")"));
+                             std::to_string(limit) + " iterations (" + remedy +
+                             ")"));
       std::abort(); // not reached: AssertThrow(false, ...) throws
     }
 
@@ -208,12 +207,8 @@ namespace formsolve
       // GMRES: x is built from the preconditioned vectors themselves, so the
       // residual tested is that of x (solver/flexible_gmres.h).
       const auto result = flexible_gmres(
-        [&A](Vector       &dst,
-             const Vector &src) { A.vmult(dst, src); },
-        [this](Vector       &dst,
-               const Vector &src) {
-          substitute(dst, src);
-        },
+        [&A](Vector &dst, const Vector &src) { A.vmult(dst, src); },
+        [this](Vector &dst, const Vector &src) { substitute(dst, src); },
         x,
         b,
         std::max(prm.reuse_tolerance, forcing) * b.l2_norm(),

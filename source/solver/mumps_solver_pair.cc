@@ -55,11 +55,10 @@ namespace formsolve
                             : apply_current_factors(y, c));
     }
 
-    unsigned int
-    MumpsSolver::apply_current_factors(Vector       &x,
-                                        const Vector &b,
-                                        Vector       &y,
-                                        const Vector &c)
+    unsigned int MumpsSolver::apply_current_factors(Vector       &x,
+                                                    const Vector &b,
+                                                    Vector       &y,
+                                                    const Vector &c)
     {
       if (exact_factors())
         {
@@ -77,30 +76,24 @@ namespace formsolve
       return its;
     }
 
-    unsigned int MumpsSolver::gmres_pair_with_factors(
-      const Matrix &A,
-      Vector        &x,
-      const Vector  &b,
-      Vector        &y,
-      const Vector  &c,
-      const unsigned int                    max_iterations,
-      bool (&converged)[2])
+    unsigned int
+    MumpsSolver::gmres_pair_with_factors(const Matrix      &A,
+                                         Vector            &x,
+                                         const Vector      &b,
+                                         Vector            &y,
+                                         const Vector      &c,
+                                         const unsigned int max_iterations,
+                                         bool (&converged)[2])
     {
       // As gmres_with_factors(), for both.
       const double relative = std::max(prm.reuse_tolerance, forcing);
       const auto   results  = flexible_gmres_pair(
-        [&A](Vector       &dst,
-             const Vector &src) { A.vmult(dst, src); },
-        [this](Vector       &dst,
-               const Vector &src) {
-          substitute(dst, src);
-        },
+        [&A](Vector &dst, const Vector &src) { A.vmult(dst, src); },
+        [this](Vector &dst, const Vector &src) { substitute(dst, src); },
         [this](Vector       &dst0,
                const Vector &src0,
                Vector       &dst1,
-               const Vector &src1) {
-          substitute(dst0, src0, dst1, src1);
-        },
+               const Vector &src1) { substitute(dst0, src0, dst1, src1); },
         x,
         b,
         relative * b.l2_norm(),

@@ -119,11 +119,9 @@ namespace
   };
 
   template <int dim>
-  Measures measure(const state::State<dim>         &state,
-                   const state::HistoryUpdate<dim> &update)
+  Measures measure(const state::State<dim> &state)
   {
-    const auto &dofs = state.dof_handler;
-    const auto &ref  = state.reference_mapping;
+    const auto &ref = state.reference_mapping;
     return {extremes(state, &History::oyane),
             extremes(state, &History::strain),
             integral(state, &History::oyane, &ref),
@@ -136,7 +134,7 @@ namespace
                         const state::HistoryUpdate<dim> &update,
                         const bool                       refine)
   {
-    const auto before_values = measure(state, update);
+    const auto before_values = measure(state);
     // Before: by each cell's reference centre, from all ranks (cells move
     // between ranks with the new partition).
     std::vector<std::pair<Key, double>> local;
@@ -149,7 +147,7 @@ namespace
     const auto r = refinement::adapt_flagged(state, update);
     AssertThrow(r.changed, ExcInternalError());
 
-    const auto after_values = measure(state, update);
+    const auto after_values = measure(state);
     // A cell left alone against itself, a child against its parent, a
     // parent against the mean of its children (equal reference volumes).
     double       mismatch = 0, largest = 0;

@@ -24,10 +24,10 @@
 #include <cmath>
 
 using namespace dealii;
+using formsolve::solver::MumpsSolver;
 using test::comm;
 using test::true_residual;
 using test::TVector;
-using formsolve::solver::MumpsSolver;
 
 namespace
 {
@@ -232,9 +232,9 @@ int main(int argc, char **argv)
       formsolve::parameters::FactorPrecision::single_precision;
     prm.reuse_iterations = 10;
     prm.reuse_tolerance  = 1e-6;
-    MumpsSolver  solver(prm, false);
-    TVector      x(owned, comm), y(owned, comm);
-    const auto   within = [&](const std::string &what) {
+    MumpsSolver solver(prm, false);
+    TVector     x(owned, comm), y(owned, comm);
+    const auto  within = [&](const std::string &what) {
       test::close(what + ": first solution within Reuse tolerance",
                   true_residual(A, x, b) <= 1e-6 * b.l2_norm() * 1.001,
                   1,
@@ -272,12 +272,15 @@ int main(int argc, char **argv)
   {
     // Exact factors: the pair solves as two solves on the same matrix do.
     formsolve::parameters::LinearSolver prm;
-    MumpsSolver pair(prm, false), apart(prm, false);
+    MumpsSolver                         pair(prm, false), apart(prm, false);
     TVector x(owned, comm), y(owned, comm), x1(owned, comm), y1(owned, comm);
     pair.solve_pair(A, x, b, y, c);
     apart.solve(A, x1, b);
     apart.solve(A, y1, c);
-    test::close("exact: one factorisation for the pair", pair.factorisations(), 1, 0);
+    test::close("exact: one factorisation for the pair",
+                pair.factorisations(),
+                1,
+                0);
     test::close("exact: the first solution of two solves",
                 relative_difference(x, x1),
                 0,

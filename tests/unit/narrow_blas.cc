@@ -6,11 +6,12 @@
 // function unchanged (bitwise). MUMPS's solve must reach these definitions
 // (the count of narrowed calls grows), and its solution must not change
 // beyond round-off.
+#include "narrow_blas.h"
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include "narrow_blas.h"
 #include <formsolve/solver/mumps_direct.h>
 
 #include "check.h"

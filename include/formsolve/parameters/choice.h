@@ -19,7 +19,7 @@ namespace formsolve
     {
     public:
       Choice(std::initializer_list<std::pair<const char *, T>> options)
-        : options(options)
+          : options(options)
       {}
 
       /// "a|b|c", the argument of Patterns::Selection.
@@ -38,7 +38,8 @@ namespace formsolve
         for (const auto &[n, value] : options)
           if (name == n)
             return value;
-        Assert(false, dealii::ExcMessage("'" + name + "' is not one of " + pattern()));
+        Assert(false,
+               dealii::ExcMessage("'" + name + "' is not one of " + pattern()));
         return options.front().second;
       }
 

@@ -48,6 +48,11 @@ namespace formsolve
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);
       void        validate() const;
+
+    private:
+      static void declare_strategy(ParameterHandler &prm);
+      static void declare_adaptive(ParameterHandler &prm);
+      static void declare_passes(ParameterHandler &prm);
     };
   } // namespace parameters
 } // namespace formsolve

@@ -66,9 +66,7 @@ namespace formsolve
 
     struct NonlinearSolver
     {
-      Tangent tangent = Tangent::stress_velocity;
-      /// Friction stiffness (K + K^T)/2: a symmetric tangent, at the price
-      /// of an inexact Newton step under sliding friction.
+      Tangent           tangent               = Tangent::stress_velocity;
       unsigned int      max_iterations        = 60;
       double            residual_tolerance    = 1e-5;
       double            correction_tolerance  = 1e-5;
@@ -92,6 +90,11 @@ namespace formsolve
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);
       void        validate() const;
+
+    private:
+      static void declare_convergence(ParameterHandler &prm);
+      static void declare_iterations(ParameterHandler &prm);
+      static void declare_first_step(ParameterHandler &prm);
     };
 
     /// MUMPS: how a tangent that is not symmetric (sliding friction) is
@@ -115,9 +118,9 @@ namespace formsolve
       bool symmetric_factorisation = true;
       /// The factors of an unsymmetric tangent.
       UnsymmetricFactors unsymmetric_factors = UnsymmetricFactors::lu;
-      bool         metis_order          = true; // else MUMPS's automatic (PORD)
-      unsigned int refinement_steps     = 0;    // MUMPS iterative refinement
-      unsigned int condition_iterations = 0;    // Lanczos estimate, 0: off
+      bool               metis_order = true; // else MUMPS's automatic (PORD)
+      unsigned int       refinement_steps     = 0; // MUMPS iterative refinement
+      unsigned int       condition_iterations = 0; // Lanczos estimate, 0: off
       /// GMRES iterations allowed with an older factorisation as
       /// preconditioner before refactorising; 0: factorise every matrix.
       unsigned int reuse_iterations = 0;

@@ -69,16 +69,16 @@ namespace formsolve
                                          const Vector &b,
                                          Vector       &y,
                                          const Vector &c);
-      void substitute(Vector &x, const Vector &b);
+      void         substitute(Vector &x, const Vector &b);
       void substitute(Vector &x, const Vector &b, Vector &y, const Vector &c);
       /// GMRES on @p A preconditioned by the stored factors (an older
       /// factorisation, or approximate factors), to the reuse tolerance;
       /// false if it does not converge within @p max_iterations.
-      bool gmres_with_factors(const Matrix      &A,
-                              Vector            &x,
-                              const Vector      &b,
-                              const unsigned int max_iterations,
-                              unsigned int      &iterations);
+      bool         gmres_with_factors(const Matrix      &A,
+                                      Vector            &x,
+                                      const Vector      &b,
+                                      const unsigned int max_iterations,
+                                      unsigned int      &iterations);
       unsigned int gmres_pair_with_factors(const Matrix      &A,
                                            Vector            &x,
                                            const Vector      &b,

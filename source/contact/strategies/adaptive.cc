@@ -181,6 +181,35 @@ namespace formsolve
     }
 
     template <int dim>
+    void AdaptivePenalty<dim>::record_statistics(
+      const std::vector<bool>   &active,
+      const std::vector<double> &epsilon,
+      const std::vector<double> &stiffness_of,
+      const MPI_Comm             comm)
+    {
+      const unsigned int n = active.size();
+      min_factor           = std::numeric_limits<double>::max();
+      max_factor           = 0;
+      max_ratio            = 0;
+      n_active             = 0;
+      for (unsigned int k = 0; k < n; ++k)
+        if (active[k])
+          {
+            ++n_active;
+            min_factor = std::min(min_factor, epsilon[k]);
+            max_factor = std::max(max_factor, epsilon[k]);
+            if (stiffness_of[k] > 0)
+              max_ratio = std::max(max_ratio, epsilon[k] / stiffness_of[k]);
+          }
+      min_factor = Utilities::MPI::min(min_factor, comm);
+      max_factor = Utilities::MPI::max(max_factor, comm);
+      max_ratio  = Utilities::MPI::max(max_ratio, comm);
+      n_active   = Utilities::MPI::sum(n_active, comm);
+      if (n_active == 0)
+        min_factor = 0;
+    }
+
+    template <int dim>
     void AdaptivePenalty<dim>::estimate(const ContactSet<dim>     &set,
                                         const tools::ToolSet<dim> &tools,
                                         const SystemView          &system,
@@ -273,25 +302,7 @@ namespace formsolve
                     epsilon[k];
             }
         }
-      min_factor = std::numeric_limits<double>::max();
-      max_factor = 0;
-      max_ratio  = 0;
-      n_active   = 0;
-      for (unsigned int k = 0; k < n; ++k)
-        if (active[k])
-          {
-            ++n_active;
-            min_factor = std::min(min_factor, epsilon[k]);
-            max_factor = std::max(max_factor, epsilon[k]);
-            if (stiffness_of[k] > 0)
-              max_ratio = std::max(max_ratio, epsilon[k] / stiffness_of[k]);
-          }
-      min_factor = Utilities::MPI::min(min_factor, comm);
-      max_factor = Utilities::MPI::max(max_factor, comm);
-      max_ratio  = Utilities::MPI::max(max_ratio, comm);
-      n_active   = Utilities::MPI::sum(n_active, comm);
-      if (n_active == 0)
-        min_factor = 0;
+      record_statistics(active, epsilon, stiffness_of, comm);
       last_status    = status;
       last_epsilon   = epsilon;
       last_stiffness = stiffness_of;

@@ -64,6 +64,12 @@ namespace formsolve
       unsigned int n_active = 0;
 
     private:
+      /// Smallest and largest factor, largest factor/stiffness ratio and
+      /// the count of the active pairs, over all ranks.
+      void record_statistics(const std::vector<bool>   &active,
+                             const std::vector<double> &epsilon,
+                             const std::vector<double> &stiffness_of,
+                             const MPI_Comm             comm);
       /// The damped estimate of every pair at the iterate of @p system
       /// (writes nothing), and the pairs' normal stiffness (N/mm).
       void estimate_at(const ContactSet<dim>     &set,

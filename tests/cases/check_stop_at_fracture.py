@@ -1,0 +1,25 @@
+"""Output/Stop at fracture: the run ends in the step in which the deciding
+criterion (Oyane) first reaches 1, before the stroke, with that reason and
+that critical stroke in run-summary.txt: every earlier step's largest I is
+below 1, the last step's at or above it, and the critical stroke lies
+within the last step's travel."""
+import csv, sys
+
+out = sys.argv[1]
+rows = list(csv.DictReader(open(out + "/history.csv")))
+summary = dict(l.rstrip("\n").split(" = ", 1) for l in open(out + "/run-summary.txt") if " = " in l)
+oyane = [float(r["max_oyane"]) for r in rows]
+travel = [float(r["punch_travel"]) for r in rows]
+stroke = float(summary["critical_stroke"])
+checks = {
+    "earlier steps below 1": all(i < 1 for i in oyane[:-1]),
+    "last step at or above 1": oyane[-1] >= 1,
+    "ended before the 5 mm stroke": travel[-1] < 5 - 1e-9,
+    "critical stroke within the last step": travel[-2] < stroke <= travel[-1] + 1e-12,
+    "end reason": "fracture" in summary["end_reason"] and "Stop at fracture" in summary["end_reason"],
+}
+print(f"{len(rows)} steps, I {oyane[-2]:.3f} -> {oyane[-1]:.3f}, critical stroke {stroke} mm, "
+      f"last travel {travel[-1]} mm: {summary['end_reason']}")
+for what, good in checks.items():
+    print(f"{'ok  ' if good else 'FAIL'} {what}")
+sys.exit(0 if all(checks.values()) else 1)
