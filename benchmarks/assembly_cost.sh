@@ -10,6 +10,8 @@
 # without formsolve's own kernel choice use the same BLAS.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# The BLAS kernels formsolve-run would choose (unless OPENBLAS_CORETYPE is set).
+eval "$(bash "$root/scripts/formsolve-run" --env)"
 exes=() tags=()
 while [ $# -gt 0 ]; do
   case $1 in

@@ -7,6 +7,8 @@
 # Usage: bash benchmarks/contact-charts-process.sh [--jobs N] [--force] [--groups ...]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# The BLAS kernels formsolve-run would choose (unless OPENBLAS_CORETYPE is set).
+eval "$(bash "$root/scripts/formsolve-run" --env)"
 [ -x "$root/build/formsolve" ] || bash "$root/scripts/build.sh"
 cd "$root/benchmarks"
 exec /usr/bin/python3 contact_charts_process.py "$@"

@@ -6,5 +6,7 @@
 # Usage: bash benchmarks/contact-charts.sh [--jobs N] [--force] [--groups ...]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# The BLAS kernels formsolve-run would choose (unless OPENBLAS_CORETYPE is set).
+eval "$(bash "$root/scripts/formsolve-run" --env)"
 [ -x "$root/build/formsolve" ] || bash "$root/scripts/build.sh"
 exec /usr/bin/python3 "$root/benchmarks/contact_charts.py" "$@"

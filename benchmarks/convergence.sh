@@ -12,6 +12,8 @@
 # 3-D runs use RANKS (default 1) MPI ranks.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# The BLAS kernels formsolve-run would choose (unless OPENBLAS_CORETYPE is set).
+eval "$(bash "$root/scripts/formsolve-run" --env)"
 exe=$root/build/formsolve
 tag=current
 FORCE=0

@@ -9,6 +9,8 @@
 #          [--set "Entry=value" ...]   (added to every run, e.g. a setting to compare)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# The BLAS kernels formsolve-run would choose (unless OPENBLAS_CORETYPE is set).
+eval "$(bash "$root/scripts/formsolve-run" --env)"
 exe=$root/build/formsolve
 tag=current
 extra=()

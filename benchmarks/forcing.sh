@@ -9,6 +9,8 @@
 # Usage: bash benchmarks/forcing.sh
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# The BLAS kernels formsolve-run would choose (unless OPENBLAS_CORETYPE is set).
+eval "$(bash "$root/scripts/formsolve-run" --env)"
 exe=${FORMSOLVE_EXE:-$root/build/formsolve}
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
 . "$root/benchmarks/from_rest.sh" && from_rest "$exe" # as the figures in doc/

@@ -4,6 +4,8 @@
 # Usage: bash benchmarks/mesh-sizes.sh [refinements...]   (default: 3 4 5)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# The BLAS kernels formsolve-run would choose (unless OPENBLAS_CORETYPE is set).
+eval "$(bash "$root/scripts/formsolve-run" --env)"
 exe=$root/build/formsolve
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
 ranks=${RANKS:-2}

@@ -9,6 +9,8 @@
 # Usage: bash benchmarks/mesh_memory.sh [other executable [its label]]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# The BLAS kernels formsolve-run would choose (unless OPENBLAS_CORETYPE is set).
+eval "$(bash "$root/scripts/formsolve-run" --env)"
 exe=$root/build/formsolve
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
 out=$root/results/mesh-memory

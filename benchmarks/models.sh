@@ -10,6 +10,8 @@
 #   --quick leaves out the two longest runs (quarter level 5, full level 4).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# The BLAS kernels formsolve-run would choose (unless OPENBLAS_CORETYPE is set).
+eval "$(bash "$root/scripts/formsolve-run" --env)"
 exe=$root/build/formsolve
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
 ranks=${RANKS:-2}

@@ -12,6 +12,8 @@
 # Usage: [REPS=2] [RANKS="1 2"] bash benchmarks/narrow_blas.sh
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# The BLAS kernels formsolve-run would choose (unless OPENBLAS_CORETYPE is set).
+eval "$(bash "$root/scripts/formsolve-run" --env)"
 build=${BUILD_DIR:-$root/build}
 [ -x "$build/formsolve" ] || bash "$root/scripts/build.sh"
 out=$root/results/narrow-blas

@@ -7,6 +7,8 @@
 # results/refinement/ and reused unless --force)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# The BLAS kernels formsolve-run would choose (unless OPENBLAS_CORETYPE is set).
+eval "$(bash "$root/scripts/formsolve-run" --env)"
 exe=$root/build/formsolve
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
 ranks=${RANKS:-2}

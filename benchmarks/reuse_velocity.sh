@@ -10,6 +10,8 @@
 # Usage: bash benchmarks/reuse_velocity.sh [large|small|all]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# The BLAS kernels formsolve-run would choose (unless OPENBLAS_CORETYPE is set).
+eval "$(bash "$root/scripts/formsolve-run" --env)"
 exe=${FORMSOLVE_EXE:-$root/build/formsolve}
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
 out=$root/results/reuse-velocity

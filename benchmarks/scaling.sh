@@ -13,6 +13,8 @@
 #   SET="Linear solver/Unsymmetric tangent=symmetric part".
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# The BLAS kernels formsolve-run would choose (unless OPENBLAS_CORETYPE is set).
+eval "$(bash "$root/scripts/formsolve-run" --env)"
 exe=${FORMSOLVE_EXE:-$root/build/formsolve} # FORMSOLVE_EXE: another binary
 [ -x "$exe" ] || bash "$root/scripts/build.sh"
 . "$root/benchmarks/from_rest.sh" && from_rest "$exe" # as the figures in doc/
