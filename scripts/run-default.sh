@@ -10,4 +10,4 @@ cd "$root"
 "$root/build/formsolve-run" -np "${RANKS:-1}" prm/cup-drawing.prm "$@"
 echo
 echo "results: $root/results/cup-drawing (history.csv; solution.pvd and revolved.pvd for ParaView; parameters.prm; report/report.md)"
-echo "the same cup in 3-D: build/formsolve-run -np 2 prm/cup-drawing-3d.prm"
+echo "the same cup in 3-D: build/formsolve-run -np 2 --narrow-blas prm/cup-drawing-3d.prm"
