@@ -1,0 +1,66 @@
+// Hill's 1948 quadratic anisotropy (../shared/method/anisotropy.md; doc/
+// theory.md section 3a): the coefficients F, G, H, L, M, N normalised to
+// G + H = 1 (sigma_bar is the rolling-direction uniaxial flow stress), from
+// r-values, and the two metrics of the flow formulation in the orthotropy
+// frame (1 = RD, 2 = TD, 3 = ND):
+// - primal: sigma_bar^2 = sigma : P : sigma (Hill's criterion),
+// - dual:   eps_bar_dot^2 = D : Q : D on the deviatoric rate, Q the
+//   pseudo-inverse of P on deviators (it annihilates the identity), so that
+//   sigma' = (sigma_bar/eps_bar_dot) Q : D does the plastic work
+//   sigma' : D = sigma_bar eps_bar_dot.
+// Both rotate with the material frame to the current one.
+#pragma once
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+namespace formsolve
+{
+  namespace material
+  {
+    /// The transverse shear coefficients L, M, which r-values do not fix.
+    enum class TransverseShear
+    {
+      equal_to_n, // L = M = N
+      isotropic   // L = M = 3/2, von Mises's
+    };
+
+    struct Hill48
+    {
+      double F = 0.5, G = 0.5, H = 0.5, L = 1.5, M = 1.5, N = 1.5;
+
+      /// von Mises: F = G = H = 1/2, L = M = N = 3/2.
+      static Hill48 isotropic();
+      /// Planar anisotropy from r0, r45, r90 (r-values at 0, 45, 90 degrees
+      /// to RD): H = r0/(1+r0), G = 1/(1+r0), F = r0/(r90 (1+r0)),
+      /// N = (r0+r90)(1+2 r45)/(2 r90 (1+r0)).
+      static Hill48 from_r_values(const double          r0,
+                                  const double          r45,
+                                  const double          r90,
+                                  const TransverseShear shear);
+      /// Normal anisotropy: r0 = r45 = r90 = r.
+      static Hill48 from_normal_r(const double r, const TransverseShear shear);
+
+      /// FG + GH + HF.
+      double determinant() const { return F * G + G * H + H * F; }
+
+      /// P in the orthotropy frame: sigma_bar^2 = sigma : P : sigma.
+      dealii::SymmetricTensor<4, 3> primal() const;
+      /// Q in the orthotropy frame: eps_bar_dot^2 = D : Q : D.
+      dealii::SymmetricTensor<4, 3> dual() const;
+
+      /// r-value of uniaxial tension at @p angle (radians) to RD: width over
+      /// thickness strain rate.
+      double r_value(const double angle) const;
+      /// Uniaxial flow stress at @p angle to RD over that along RD.
+      double stress_ratio(const double angle) const;
+    };
+
+    /// T_ijkl = R_ia R_jb R_kc R_ld T_abcd: a metric of the frame whose axes
+    /// are the columns of @p R (RD, TD, ND in current coordinates) in the
+    /// current frame.
+    dealii::SymmetricTensor<4, 3>
+    rotated(const dealii::SymmetricTensor<4, 3> &T,
+            const dealii::Tensor<2, 3>          &R);
+  } // namespace material
+} // namespace formsolve

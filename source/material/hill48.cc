@@ -1,0 +1,126 @@
+#include <formsolve/material/hill48.h>
+
+#include <cmath>
+
+namespace formsolve
+{
+  namespace material
+  {
+    using namespace dealii;
+
+    Hill48 Hill48::isotropic()
+    {
+      return Hill48();
+    }
+
+    Hill48 Hill48::from_r_values(const double          r0,
+                                 const double          r45,
+                                 const double          r90,
+                                 const TransverseShear shear)
+    {
+      Hill48 h;
+      h.H = r0 / (1 + r0);
+      h.G = 1 / (1 + r0);
+      h.F = r0 / (r90 * (1 + r0));
+      h.N = (r0 + r90) * (1 + 2 * r45) / (2 * r90 * (1 + r0));
+      h.L = h.M = shear == TransverseShear::equal_to_n ? h.N : 1.5;
+      return h;
+    }
+
+    Hill48 Hill48::from_normal_r(const double r, const TransverseShear shear)
+    {
+      return from_r_values(r, r, r, shear);
+    }
+
+    SymmetricTensor<4, 3> Hill48::primal() const
+    {
+      // sigma_bar^2 = F(s22 - s33)^2 + G(s33 - s11)^2 + H(s11 - s22)^2
+      //             + 2 L s23^2 + 2 M s31^2 + 2 N s12^2.
+      // deal.II's SymmetricTensor<4, 3> has the minor symmetries only: the
+      // (ij, kl) and (kl, ij) entries are set apart.
+      SymmetricTensor<4, 3> P;
+      P[0][0][0][0] = G + H;
+      P[1][1][1][1] = F + H;
+      P[2][2][2][2] = F + G;
+      P[0][0][1][1] = P[1][1][0][0] = -H;
+      P[1][1][2][2] = P[2][2][1][1] = -F;
+      P[0][0][2][2] = P[2][2][0][0] = -G;
+      // s : P : s counts each shear entry four times: 4 P_1212 s12^2.
+      P[1][2][1][2] = L / 2;
+      P[0][2][0][2] = M / 2;
+      P[0][1][0][1] = N / 2;
+      return P;
+    }
+
+    SymmetricTensor<4, 3> Hill48::dual() const
+    {
+      // The normal block of P's pseudo-inverse on deviators (rows summing
+      // to zero), and the shear entries (anisotropy.md sections 2, 3).
+      const double          d = 9 * determinant();
+      SymmetricTensor<4, 3> Q;
+      Q[0][0][0][0] = (4 * F + G + H) / d;
+      Q[1][1][1][1] = (F + 4 * G + H) / d;
+      Q[2][2][2][2] = (F + G + 4 * H) / d;
+      Q[0][0][1][1] = Q[1][1][0][0] = -(2 * F + 2 * G - H) / d;
+      Q[0][0][2][2] = Q[2][2][0][0] = -(2 * F - G + 2 * H) / d;
+      Q[1][1][2][2] = Q[2][2][1][1] = -(2 * G + 2 * H - F) / d;
+      // D : Q : D counts each shear entry four times: 2 D12^2 / N.
+      Q[1][2][1][2] = 1 / (2 * L);
+      Q[0][2][0][2] = 1 / (2 * M);
+      Q[0][1][0][1] = 1 / (2 * N);
+      return Q;
+    }
+
+    namespace
+    {
+      /// The uniaxial stress of unit size along @p angle in the RD-TD plane.
+      SymmetricTensor<2, 3> uniaxial(const double angle)
+      {
+        const double          c = std::cos(angle), s = std::sin(angle);
+        SymmetricTensor<2, 3> sigma;
+        sigma[0][0] = c * c;
+        sigma[1][1] = s * s;
+        sigma[0][1] = c * s;
+        return sigma;
+      }
+    } // namespace
+
+    double Hill48::r_value(const double angle) const
+    {
+      // The flow rule D ~ P : sigma; width (in-plane, normal to the load)
+      // over thickness strain rate.
+      const SymmetricTensor<2, 3> D = primal() * uniaxial(angle);
+      const Tensor<1, 3> width({-std::sin(angle), std::cos(angle), 0.});
+      return width * (D * width) / D[2][2];
+    }
+
+    double Hill48::stress_ratio(const double angle) const
+    {
+      // sigma_bar(s u) = s sqrt(u : P : u) for a uniaxial unit stress u.
+      const SymmetricTensor<4, 3> P = primal();
+      return std::sqrt(uniaxial(0) * (P * uniaxial(0)) /
+                       (uniaxial(angle) * (P * uniaxial(angle))));
+    }
+
+    SymmetricTensor<4, 3> rotated(const SymmetricTensor<4, 3> &T,
+                                  const Tensor<2, 3>          &R)
+    {
+      SymmetricTensor<4, 3> out;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = i; j < 3; ++j)
+          for (unsigned int k = 0; k < 3; ++k)
+            for (unsigned int l = k; l < 3; ++l)
+              {
+                double v = 0;
+                for (unsigned int a = 0; a < 3; ++a)
+                  for (unsigned int b = 0; b < 3; ++b)
+                    for (unsigned int c = 0; c < 3; ++c)
+                      for (unsigned int e = 0; e < 3; ++e)
+                        v += R[i][a] * R[j][b] * R[k][c] * R[l][e] *
+                             T[a][b][c][e];
+                out[i][j][k][l] = v;
+              }
+      return out;
+    }
+  } // namespace material
+} // namespace formsolve
