@@ -116,8 +116,8 @@ namespace formsolve
                   for (unsigned int b = 0; b < 3; ++b)
                     for (unsigned int c = 0; c < 3; ++c)
                       for (unsigned int e = 0; e < 3; ++e)
-                        v += R[i][a] * R[j][b] * R[k][c] * R[l][e] *
-                             T[a][b][c][e];
+                        v +=
+                          R[i][a] * R[j][b] * R[k][c] * R[l][e] * T[a][b][c][e];
                 out[i][j][k][l] = v;
               }
       return out;

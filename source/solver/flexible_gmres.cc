@@ -7,14 +7,14 @@ namespace formsolve
 {
   namespace solver
   {
-    using Vector = dealii::TrilinosWrappers::MPI::Vector;
+    using TrilinosVector = dealii::TrilinosWrappers::MPI::Vector;
 
-    FlexibleGmres::FlexibleGmres(const Operator    &operator_vmult,
-                                 Vector            &x,
-                                 const Vector      &b,
-                                 const double       tolerance,
-                                 const unsigned int max_iterations,
-                                 const unsigned int max_basis)
+    FlexibleGmres::FlexibleGmres(const Operator       &operator_vmult,
+                                 TrilinosVector       &x,
+                                 const TrilinosVector &b,
+                                 const double          tolerance,
+                                 const unsigned int    max_iterations,
+                                 const unsigned int    max_basis)
         : vmult(operator_vmult)
         , x(x)
         , b(b)
@@ -53,7 +53,7 @@ namespace formsolve
       k    = 0;
     }
 
-    Vector &FlexibleGmres::preconditioned()
+    TrilinosVector &FlexibleGmres::preconditioned()
     {
       z[k].reinit(b, true);
       return z[k];
@@ -132,8 +132,8 @@ namespace formsolve
     FlexibleGmresResult
     flexible_gmres(const FlexibleGmres::Operator &operator_vmult,
                    const FlexibleGmres::Operator &precondition,
-                   Vector                        &x,
-                   const Vector                  &b,
+                   TrilinosVector                &x,
+                   const TrilinosVector          &b,
                    const double                   tolerance,
                    const unsigned int             max_iterations,
                    const unsigned int             max_basis)
@@ -156,12 +156,12 @@ namespace formsolve
     flexible_gmres_pair(const FlexibleGmres::Operator &operator_vmult,
                         const FlexibleGmres::Operator &precondition,
                         const PairPreconditioner      &precondition_pair,
-                        Vector                        &x0,
-                        const Vector                  &b0,
+                        TrilinosVector                &x0,
+                        const TrilinosVector          &b0,
                         const double                   tolerance0,
                         const unsigned int             max_iterations0,
-                        Vector                        &x1,
-                        const Vector                  &b1,
+                        TrilinosVector                &x1,
+                        const TrilinosVector          &b1,
                         const double                   tolerance1,
                         const unsigned int             max_iterations1)
     {

@@ -48,13 +48,23 @@ namespace
     const auto P = h.primal(), Q = h.dual();
     for (const double seed : {0.7, 1.3, 2.9})
       {
-        const auto   s   = some_deviator(seed);
-        const auto   D   = P * s;
-        const double bar = std::sqrt(s * (P * s)), rate = std::sqrt(D * (Q * D));
-        test::close(name + ": Q : (P : s') = s'", (Q * D - s).norm() / s.norm(), 0, 1e-12);
-        test::close(name + ": s' : D = sigma_bar eps_bar_dot", s * D, bar * rate, 1e-12 * bar * rate);
+        const auto   s    = some_deviator(seed);
+        const auto   D    = P * s;
+        const double bar  = std::sqrt(s * (P * s)),
+                     rate = std::sqrt(D * (Q * D));
+        test::close(name + ": Q : (P : s') = s'",
+                    (Q * D - s).norm() / s.norm(),
+                    0,
+                    1e-12);
+        test::close(name + ": s' : D = sigma_bar eps_bar_dot",
+                    s * D,
+                    bar * rate,
+                    1e-12 * bar * rate);
       }
-    test::close(name + ": Q : I = 0", (Q * unit_symmetric_tensor<3>()).norm(), 0, 1e-14);
+    test::close(name + ": Q : I = 0",
+                (Q * unit_symmetric_tensor<3>()).norm(),
+                0,
+                1e-14);
   }
 } // namespace
 
@@ -62,20 +72,30 @@ int main()
 {
   const double pi = std::acos(-1.);
   {
-    const Hill48 h = Hill48::from_normal_r(1., TransverseShear::equal_to_n);
+    const Hill48 h   = Hill48::from_normal_r(1., TransverseShear::equal_to_n);
     const auto   dev = deviator_tensor<3>();
-    test::close("r = 1: P = 3/2 dev", largest_difference(h.primal(), 1.5 * dev), 0, 1e-15);
-    test::close("r = 1: Q = 2/3 dev", largest_difference(h.dual(), 2. / 3 * dev), 0, 1e-15);
-    test::close("r = 1: the r-value at 30 degrees", h.r_value(pi / 6), 1, 1e-14);
+    test::close("r = 1: P = 3/2 dev",
+                largest_difference(h.primal(), 1.5 * dev),
+                0,
+                1e-15);
+    test::close("r = 1: Q = 2/3 dev",
+                largest_difference(h.dual(), 2. / 3 * dev),
+                0,
+                1e-15);
+    test::close("r = 1: the r-value at 30 degrees",
+                h.r_value(pi / 6),
+                1,
+                1e-14);
     check_metrics("r = 1", h);
   }
   for (const auto &[r0, r45, r90] : {std::array<double, 3>{{1.9, 1.4, 2.3}},
                                      std::array<double, 3>{{0.6, 0.5, 0.7}},
                                      std::array<double, 3>{{0.85, 0.85, 0.85}}})
     {
-      const std::string name = "r " + std::to_string(r0) + ", " + std::to_string(r45) + ", " +
-                               std::to_string(r90);
-      const Hill48      h    = Hill48::from_r_values(r0, r45, r90, TransverseShear::equal_to_n);
+      const std::string name = "r " + std::to_string(r0) + ", " +
+                               std::to_string(r45) + ", " + std::to_string(r90);
+      const Hill48 h =
+        Hill48::from_r_values(r0, r45, r90, TransverseShear::equal_to_n);
       test::close(name + ": r at 0", h.r_value(0), r0, 1e-12 * r0);
       test::close(name + ": r at 45", h.r_value(pi / 4), r45, 1e-12 * r45);
       test::close(name + ": r at 90", h.r_value(pi / 2), r90, 1e-12 * r90);
@@ -85,20 +105,29 @@ int main()
           const double c = std::cos(angle), s = std::sin(angle);
           const double hill =
             1 / std::sqrt(h.F * std::pow(s, 4) + h.G * std::pow(c, 4) +
-                          h.H * std::pow(c * c - s * s, 2) + 2 * h.N * s * s * c * c);
-          test::close(name + ": stress ratio at " + std::to_string(angle), h.stress_ratio(angle),
-                      hill, 1e-13);
+                          h.H * std::pow(c * c - s * s, 2) +
+                          2 * h.N * s * s * c * c);
+          test::close(name + ": stress ratio at " + std::to_string(angle),
+                      h.stress_ratio(angle),
+                      hill,
+                      1e-13);
         }
       check_metrics(name, h);
       // A rotation of the material and of the rate together changes nothing.
       const double       a = 0.4, b = 1.1;
-      const Tensor<2, 3> Rz({{std::cos(a), -std::sin(a), 0}, {std::sin(a), std::cos(a), 0}, {0, 0, 1}});
-      const Tensor<2, 3> Rx({{1, 0, 0}, {0, std::cos(b), -std::sin(b)}, {0, std::sin(b), std::cos(b)}});
-      const Tensor<2, 3> R = Rz * Rx;
-      const auto         D = some_deviator(0.3);
+      const Tensor<2, 3> Rz({{std::cos(a), -std::sin(a), 0},
+                             {std::sin(a), std::cos(a), 0},
+                             {0, 0, 1}});
+      const Tensor<2, 3> Rx({{1, 0, 0},
+                             {0, std::cos(b), -std::sin(b)},
+                             {0, std::sin(b), std::cos(b)}});
+      const Tensor<2, 3> R  = Rz * Rx;
+      const auto         D  = some_deviator(0.3);
       const auto         Dc = symmetrize(R * Tensor<2, 3>(D) * transpose(R));
       const auto         Qc = formsolve::material::rotated(h.dual(), R);
-      test::close(name + ": rotated with the material", Dc * (Qc * Dc), D * (h.dual() * D),
+      test::close(name + ": rotated with the material",
+                  Dc * (Qc * Dc),
+                  D * (h.dual() * D),
                   1e-13 * (D * (h.dual() * D)));
     }
   {
@@ -108,8 +137,12 @@ int main()
     D[0][0] = e1;
     D[1][1] = e2;
     D[2][2] = -e1 - e2;
-    const double closed = (1 + r) / (1 + 2 * r) * ((1 + r) * (e1 * e1 + e2 * e2) + 2 * r * e1 * e2);
-    test::close("normal r: eps_bar_dot^2 of in-plane rates", D * (h.dual() * D), closed, 1e-14);
+    const double closed =
+      (1 + r) / (1 + 2 * r) * ((1 + r) * (e1 * e1 + e2 * e2) + 2 * r * e1 * e2);
+    test::close("normal r: eps_bar_dot^2 of in-plane rates",
+                D * (h.dual() * D),
+                closed,
+                1e-14);
     test::close("normal r, L = M = 3/2", h.L + h.M, 3, 0);
   }
   return test::result();

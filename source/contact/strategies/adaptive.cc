@@ -436,7 +436,8 @@ namespace formsolve
             return std::make_unique<AdaptivePenalty<3>>(p, strict);
           });
       }
-      [[maybe_unused]] const bool registered = register_adaptive<false>();
+      [[maybe_unused]] const bool registered_adaptive =
+        register_adaptive<false>();
       [[maybe_unused]] const bool registered_strict = register_adaptive<true>();
     } // namespace
   }   // namespace contact

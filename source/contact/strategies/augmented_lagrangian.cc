@@ -57,7 +57,7 @@ namespace formsolve
         return std::make_unique<AugmentedLagrangian<dim>>(
           create_penalty_strategy<dim>(inner));
       }
-      [[maybe_unused]] const bool registered =
+      [[maybe_unused]] const bool registered_augmented_lagrangian =
         register_penalty_strategy("augmented-lagrangian", create<2>, create<3>);
     } // namespace
   }   // namespace contact

@@ -24,7 +24,7 @@ namespace formsolve
 
     namespace
     {
-      [[maybe_unused]] const bool registered = register_penalty_strategy(
+      [[maybe_unused]] const bool registered_fixed = register_penalty_strategy(
         "fixed",
         [](const parameters::Contact &) {
           return std::make_unique<FixedPenalty<2>>();
