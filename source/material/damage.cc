@@ -1,4 +1,5 @@
 #include <formsolve/material/damage.h>
+#include <formsolve/material/hill48.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,19 +10,35 @@ namespace formsolve
   {
     using namespace dealii;
 
+    namespace
+    {
+      /// sigma_bar_calibrated = sigma_bar / k, eps_bar_calibrated = k
+      /// eps_bar for Hill's normal anisotropy with r (anisotropy.md 4).
+      double normalisation(const parameters::Anisotropy &p)
+      {
+        if (p.criterion == parameters::YieldCriterion::von_mises ||
+            p.damage_normalisation ==
+              parameters::DamageNormalisation::rolling_direction)
+          return 1;
+        const double r = Hill48::from_parameters(p).mean_r();
+        return std::sqrt(2 * (2 + r) / (3 * (1 + r)));
+      }
+    } // namespace
+
     DamageCriteria::DamageCriteria(const parameters::Material &p)
-        : a(p.oyane_a)
-        , b(p.oyane_b)
-        , critical(p.cockcroft_latham)
+        : k(normalisation(p.anisotropy))
+        , a(p.oyane_a / k)
+        , b(p.oyane_b / (k * k))
+        , critical(p.cockcroft_latham / k)
         , which(p.fracture)
     {}
 
     DamageIncrement DamageCriteria::increment(const SymmetricTensor<2, 3> &s,
                                               const double                 mean,
+                                              const double equivalent,
                                               const double d_strain) const
     {
       DamageIncrement d;
-      const double    equivalent = std::sqrt(1.5 * (s * s));
       if (d_strain <= 0 || equivalent <= 0)
         return d;
       d.oyane                     = (mean / equivalent + a) * d_strain / b;

@@ -32,6 +32,66 @@ namespace formsolve
       return from_r_values(r, r, r, shear);
     }
 
+    Hill48 Hill48::from_yield_stresses(const double          s45,
+                                       const double          s90,
+                                       const double          sb,
+                                       const TransverseShear shear)
+    {
+      Hill48       h;
+      const double a = 1 / (s90 * s90), b = 1 / (sb * sb);
+      h.F = (a + b - 1) / 2;
+      h.G = (1 + b - a) / 2;
+      h.H = (1 + a - b) / 2;
+      h.N = 2 / (s45 * s45) - (h.F + h.G) / 2;
+      h.L = h.M = shear == TransverseShear::equal_to_n ? h.N : 1.5;
+      return h;
+    }
+
+    Hill48 Hill48::from_parameters(const parameters::Anisotropy &a)
+    {
+      using namespace parameters;
+      if (a.criterion == YieldCriterion::von_mises)
+        return isotropic();
+      if (a.calibration == HillCalibration::r_values)
+        return a.r_values.size() == 1 ?
+                 from_normal_r(a.r_values[0], a.transverse_shear) :
+                 from_r_values(a.r_values[0],
+                               a.r_values[1],
+                               a.r_values[2],
+                               a.transverse_shear);
+      const auto &v = a.yield_stress_ratios;
+      return from_yield_stresses(v[0],
+                                 v[1],
+                                 v.size() > 2 ? v[2] : 1.,
+                                 a.transverse_shear);
+    }
+
+    Mandel6x6 Hill48::root() const
+    {
+      // In the orthotropy frame 3/2 Q is block diagonal: the normal block
+      // (Mandel factor 1), singular along (1, 1, 1), and the shear diagonal
+      // 3/2 * 2 Q_ijij. The root of the normal block by its eigenvectors.
+      const Mandel6x6       q = to_mandel(dual());
+      SymmetricTensor<2, 3> A;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = i; j < 3; ++j)
+          A[i][j] = 1.5 * q[i][j];
+      const auto eig = eigenvectors(A);
+      Mandel6x6  S{};
+      for (const auto &[lambda, v] : eig)
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            S[i][j] += std::sqrt(std::max(lambda, 0.)) * v[i] * v[j];
+      for (unsigned int r = 3; r < 6; ++r)
+        S[r][r] = std::sqrt(1.5 * q[r][r]);
+      return S;
+    }
+
+    double Hill48::mean_r() const
+    {
+      return (r_value(0) + 2 * r_value(M_PI / 4) + r_value(M_PI / 2)) / 4;
+    }
+
     SymmetricTensor<4, 3> Hill48::primal() const
     {
       // sigma_bar^2 = F(s22 - s33)^2 + G(s33 - s11)^2 + H(s11 - s22)^2

@@ -10,6 +10,10 @@ namespace formsolve
 
     RigidViscoplastic::RigidViscoplastic(const parameters::Material &p)
         : law(p)
+        , coefficients(Hill48::from_parameters(p.anisotropy))
+        , root(coefficients.root())
+        , iso(p.anisotropy.criterion == parameters::YieldCriterion::von_mises)
+        , rolling(p.anisotropy.rolling_direction * M_PI / 180)
         , cutoff(p.limiting_strain_rate)
         , smooth(p.rigid_zone == parameters::RigidZone::smooth)
         , bulk(p.volumetric_penalty * p.strength_coefficient /
@@ -21,9 +25,38 @@ namespace formsolve
                                               const double dt,
                                               const bool   newton) const
     {
-      PointResponse               out;
-      const SymmetricTensor<2, 3> e    = deviator(D);
-      const double                rate = std::sqrt(2. / 3. * (e * e));
+      return respond(deviator(D), strain_old, dt, newton);
+    }
+
+    PointResponse RigidViscoplastic::evaluate(const SymmetricTensor<2, 3> &D,
+                                              const double     strain_old,
+                                              const double     dt,
+                                              const bool       newton,
+                                              const Mandel6x6 &map) const
+    {
+      // S annihilates the identity: no deviator needed.
+      PointResponse out =
+        respond(from_mandel(transpose_multiply(map, to_mandel(D))),
+                strain_old,
+                dt,
+                newton);
+      out.deviatoric_stress =
+        from_mandel(multiply(map, to_mandel(out.deviatoric_stress)));
+      return out;
+    }
+
+    Mandel6x6 RigidViscoplastic::hill_map(const Tensor<2, 3> &frame) const
+    {
+      return multiply(mandel_rotation(frame), root);
+    }
+
+    PointResponse RigidViscoplastic::respond(const SymmetricTensor<2, 3> &e,
+                                             const double strain_old,
+                                             const double dt,
+                                             const bool   newton) const
+    {
+      PointResponse out;
+      const double  rate = std::sqrt(2. / 3. * (e * e));
       out.equivalent_strain_rate       = rate;
       out.strain_rate_deviator         = e;
       out.dual_rate                    = rate;
@@ -93,6 +126,14 @@ namespace formsolve
         C += 0.5 * m.beta_plastic *
              (outer_product(e, w_rate) + outer_product(w_rate, e));
       return C;
+    }
+
+    Mandel6x6 RigidViscoplastic::tangent(const PointResponse         &m,
+                                         const SymmetricTensor<2, 3> &w_rate,
+                                         const Mandel6x6             &map) const
+    {
+      return multiply_transpose(multiply(map, to_mandel(tangent(m, w_rate))),
+                                map);
     }
   } // namespace material
 } // namespace formsolve

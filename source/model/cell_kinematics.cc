@@ -31,6 +31,7 @@ namespace formsolve
                                           fe,
                                           quadrature,
                                           update_JxW_values |
+                                            (extra & update_jacobians) |
                                             (kinematics.update_flags() &
                                              update_quadrature_points));
       component.resize(fe.n_dofs_per_cell());
@@ -100,6 +101,15 @@ namespace formsolve
       for (unsigned int d = 0; d < dim; ++d)
         t[d] = fv.jacobian(q)[d][axis];
       return Kinematics<dim>::embed(t / t.norm());
+    }
+
+    template <int dim>
+    Tensor<2, dim>
+    CellKinematics<dim>::deformation_gradient(const unsigned int q) const
+    {
+      Assert(reference_fv, ExcInternalError());
+      return Tensor<2, dim>(fv.jacobian(q)) *
+             invert(Tensor<2, dim>(reference_fv->jacobian(q)));
     }
 
 #define INSTANTIATE(dim) template class CellKinematics<dim>;

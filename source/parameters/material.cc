@@ -113,6 +113,7 @@ namespace formsolve
                         Double(),
                         "alpha (-): the mean stress is sigma_m = alpha K/rate0 "
                         "tr(strain rate), integrated with reduced quadrature.");
+      Anisotropy::declare(prm);
       prm.declare_entry(
         "Oyane a",
         "0.020",
@@ -165,6 +166,7 @@ namespace formsolve
       limiting_strain_rate  = prm.get_double("Limiting strain rate");
       rigid_zone            = rigid_zone_names.parse(prm.get("Rigid zone"));
       volumetric_penalty    = prm.get_double("Volumetric penalty");
+      anisotropy.parse(prm);
       oyane_a               = prm.get_double("Oyane a");
       oyane_b               = prm.get_double("Oyane b");
       cockcroft_latham      = prm.get_double("Cockcroft-Latham critical value");
@@ -190,6 +192,7 @@ namespace formsolve
                        "Material/Limiting strain rate",
                        "1/s");
       require_positive(volumetric_penalty, "Material/Volumetric penalty", "");
+      anisotropy.validate();
       require_positive(oyane_b, "Material/Oyane b", "");
       require(std::isfinite(oyane_a), "Material/Oyane a", "must be finite");
       require(fracture != FractureCriterion::cockcroft_latham ||

@@ -146,6 +146,14 @@ namespace formsolve
           geometry.blank_diameter > tools.die.diameter,
           "Geometry/Blank diameter",
           "must exceed Tools/Die/Diameter, or the blank falls through the die");
+      require(!axi || !material.anisotropy.planar(),
+              material.anisotropy.calibration == HillCalibration::r_values
+                ? "Material/R-values"
+                : "Material/Yield stress ratios",
+              "planar anisotropy (" + material.anisotropy.describe() +
+                ") varies around the cup, which an axisymmetric section "
+                "cannot represent: give one normal r-value here, or use "
+                "Geometry/Model = quarter (earing needs a 3-D model)");
       require(!output.revolved_copy || axi,
               "Output/Revolved copy",
               "is only available for Geometry/Model = axisymmetric");

@@ -2,6 +2,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <formsolve/material/hill_orientation.h>
 #include <formsolve/model/cell_kinematics.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/model/position_order.h>
@@ -76,7 +77,16 @@ namespace formsolve
     {
       const auto         &fe = dof_handler.get_fe();
       const unsigned int  n  = fe.n_dofs_per_cell();
-      CellKinematics<dim> kf(kinematics, mapping, fe, full);
+      // Hill's criterion needs the deformation gradient from the reference
+      // configuration for the orthotropy frame.
+      const bool          hill = !material.isotropic();
+      CellKinematics<dim> kf(kinematics,
+                             mapping,
+                             fe,
+                             full,
+                             hill ? update_jacobians : update_default,
+                             hill ? &reference_mapping : nullptr);
+      material::HillOrientation<dim> orientation(material);
       CellKinematics<dim> kr(kinematics,
                              mapping,
                              fe,
@@ -106,13 +116,17 @@ namespace formsolve
           {
             kf.reinit(cell);
             kr.reinit(cell);
+            if (hill)
+              orientation.reinit(kf);
             r = 0;
             kf.rates(v, D);
             const auto h = history.get_data(cell);
             for (unsigned int q = 0; q < kf.n_points(); ++q)
               {
                 const auto m =
-                  material.evaluate(D[q], h[q]->strain, dt, newton);
+                  hill ? material.evaluate(
+                           D[q], h[q]->strain, dt, newton, orientation.map(q)) :
+                         material.evaluate(D[q], h[q]->strain, dt, newton);
                 const double dV = kf.dV(q);
                 kf.shape_strains(q, B);
                 // Stress-velocity linearisation: (4/9) s/rate^3 D'(x)D' becomes
@@ -143,6 +157,9 @@ namespace formsolve
                   }
                 if (matrix && product_form)
                   tangent.add_deviatoric(q, B, mu, s, u);
+                else if (matrix && hill)
+                  tangent.add_general(
+                    q, B, material.tangent(m, w_rate, orientation.map(q)), dV);
                 else if (matrix)
                   tangent.add_general(q, B, material.tangent(m, w_rate) * dV);
               }

@@ -75,8 +75,16 @@ namespace formsolve
                                        const std::vector<model::ShapeStrain> &B,
                                        const SymmetricTensor<4, 3>           &C)
     {
+      add_general(q, B, material::to_mandel(C), 1.);
+    }
+
+    template <int dim>
+    void CellTangent<dim>::add_general(const unsigned int                     q,
+                                       const std::vector<model::ShapeStrain> &B,
+                                       const material::Mandel6x6             &C6,
+                                       const double weight)
+    {
       general_form       = true;
-      const auto   C6    = material::to_mandel(C);
       const double root2 = std::sqrt(2.);
       for (unsigned int i = 0; i < B.size(); ++i)
         {
@@ -99,7 +107,7 @@ namespace formsolve
               for (unsigned int s = 0; s < 6; ++s)
                 cb += C6[r][s] * b[s];
               G(6 * q + r, i)  = b[r];
-              CG(6 * q + r, i) = cb;
+              CG(6 * q + r, i) = weight * cb;
             }
         }
     }

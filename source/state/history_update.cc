@@ -1,3 +1,4 @@
+#include <formsolve/material/hill_orientation.h>
 #include <formsolve/model/cell_kinematics.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/state/history_update.h>
@@ -35,7 +36,14 @@ namespace formsolve
                                      HistoryStorage<dim>   &history) const
     {
       const auto         &fe = dof_handler.get_fe();
-      CellKinematics<dim> kf(kinematics, mapping, fe, full, update_jacobians);
+      const bool          hill = !material.isotropic();
+      CellKinematics<dim> kf(kinematics,
+                             mapping,
+                             fe,
+                             full,
+                             update_jacobians,
+                             hill ? &reference_mapping : nullptr);
+      material::HillOrientation<dim> orientation(material);
       CellKinematics<dim> kr(kinematics,
                              mapping,
                              fe,
@@ -53,6 +61,8 @@ namespace formsolve
             kf.reinit(cell);
             kr.reinit(cell);
             kf.rates(v, D);
+            if (hill)
+              orientation.reinit(kf);
             auto h = history.get_data(cell);
             volumetric_rates(kr, v, dt, h[0]->volume_offset, Dr, div_v);
             double mean_div = 0, volume = 0;
@@ -65,13 +75,17 @@ namespace formsolve
 
             for (unsigned int q = 0; q < kf.n_points(); ++q)
               {
-                const auto r = material.evaluate(D[q], h[q]->strain, dt, false);
+                const auto r =
+                  hill ? material.evaluate(
+                           D[q], h[q]->strain, dt, false, orientation.map(q)) :
+                         material.evaluate(D[q], h[q]->strain, dt, false);
                 if (damage)
                   {
-                    const auto d =
-                      damage->increment(r.deviatoric_stress,
-                                        mean_stress,
-                                        dt * r.equivalent_strain_rate);
+                    const auto d = damage->increment(
+                      r.deviatoric_stress,
+                      mean_stress,
+                      material::RigidViscoplastic::equivalent_stress(r),
+                      dt * r.equivalent_strain_rate);
                     h[q]->oyane += d.oyane;
                     h[q]->cockcroft_latham += d.cockcroft_latham;
                   }

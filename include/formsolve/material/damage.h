@@ -22,11 +22,22 @@ namespace formsolve
       explicit DamageCriteria(const parameters::Material &p);
 
       /// Increments over a step with deviatoric stress @p s, mean stress
-      /// @p mean (MPa, tension positive) and equivalent strain increment
-      /// @p d_strain.
+      /// @p mean (MPa, tension positive), equivalent stress @p equivalent
+      /// and equivalent strain increment @p d_strain (von Mises's or
+      /// Hill's, G + H = 1).
       DamageIncrement increment(const dealii::SymmetricTensor<2, 3> &s,
                                 const double                         mean,
+                                const double equivalent,
                                 const double d_strain) const;
+
+      /// The constants as used, after the conversion from the
+      /// normalisation they were calibrated in (Material/Fracture constants
+      /// normalisation): a/k, b/k^2, C_crit/k.
+      double a_used() const { return a; }
+      double b_used() const { return b; }
+      double critical_used() const { return critical; }
+      /// k = sqrt(2(2+r)/(3(1+r))) of that conversion (1: none).
+      double conversion() const { return k; }
 
       /// C = W / C_crit; 0 if C_crit is not set.
       double cockcroft_latham(const double integral) const
@@ -41,7 +52,7 @@ namespace formsolve
       parameters::FractureCriterion criterion() const { return which; }
 
     private:
-      double                        a, b, critical;
+      double                        k, a, b, critical;
       parameters::FractureCriterion which;
     };
   } // namespace material

@@ -14,16 +14,14 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <formsolve/material/mandel.h>
+#include <formsolve/parameters/anisotropy.h>
+
 namespace formsolve
 {
   namespace material
   {
-    /// The transverse shear coefficients L, M, which r-values do not fix.
-    enum class TransverseShear
-    {
-      equal_to_n, // L = M = N
-      isotropic   // L = M = 3/2, von Mises's
-    };
+    using parameters::TransverseShear;
 
     struct Hill48
     {
@@ -40,6 +38,15 @@ namespace formsolve
                                   const TransverseShear shear);
       /// Normal anisotropy: r0 = r45 = r90 = r.
       static Hill48 from_normal_r(const double r, const TransverseShear shear);
+      /// From uniaxial flow stresses at 45 and 90 degrees and the balanced-
+      /// biaxial one, over the RD flow stress: G + H = 1, F + H = 1/s90^2,
+      /// F + G = 1/sb^2, F + G + 2N = 4/s45^2.
+      static Hill48 from_yield_stresses(const double          s45,
+                                        const double          s90,
+                                        const double          sb,
+                                        const TransverseShear shear);
+      /// From the Material entries (von Mises if so chosen).
+      static Hill48 from_parameters(const parameters::Anisotropy &a);
 
       /// FG + GH + HF.
       double determinant() const { return F * G + G * H + H * F; }
@@ -48,6 +55,15 @@ namespace formsolve
       dealii::SymmetricTensor<4, 3> primal() const;
       /// Q in the orthotropy frame: eps_bar_dot^2 = D : Q : D.
       dealii::SymmetricTensor<4, 3> dual() const;
+
+      /// S = (3/2 Q)^(1/2) on deviators, in Mandel's notation in the
+      /// orthotropy frame: eps_bar_dot^2 = 2/3 |S D|^2, so that the von Mises
+      /// law of the mapped rate S D gives Hill's (doc/theory.md, eq. 3b). The
+      /// deviatoric projector for von Mises.
+      Mandel6x6 root() const;
+
+      /// Mean r-value (r0 + 2 r45 + r90)/4.
+      double mean_r() const;
 
       /// r-value of uniaxial tension at @p angle (radians) to RD: width over
       /// thickness strain rate.

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
 
 #include <array>
 #include <cmath>
@@ -43,5 +44,32 @@ namespace formsolve
                      [mandel_index[s][0]][mandel_index[s][1]];
       return m;
     }
+
+    inline dealii::SymmetricTensor<2, 3> from_mandel(const Mandel6 &v)
+    {
+      dealii::SymmetricTensor<2, 3> a;
+      for (unsigned int r = 0; r < 6; ++r)
+        a[mandel_index[r][0]][mandel_index[r][1]] = v[r] / mandel_factor(r);
+      return a;
+    }
+
+    inline Mandel6 multiply(const Mandel6x6 &A, const Mandel6 &x)
+    {
+      Mandel6 y{};
+      for (unsigned int r = 0; r < 6; ++r)
+        for (unsigned int s = 0; s < 6; ++s)
+          y[r] += A[r][s] * x[s];
+      return y;
+    }
+
+    /// A B, and A B^T.
+    Mandel6x6 multiply(const Mandel6x6 &A, const Mandel6x6 &B);
+    Mandel6x6 multiply_transpose(const Mandel6x6 &A, const Mandel6x6 &B);
+    /// A^T x.
+    Mandel6 transpose_multiply(const Mandel6x6 &A, const Mandel6 &x);
+
+    /// T with to_mandel(R a R^T) = T to_mandel(a) for symmetric a: a
+    /// rotation of the 6-space (T^T = T^-1) when R is orthogonal.
+    Mandel6x6 mandel_rotation(const dealii::Tensor<2, 3> &R);
   } // namespace material
 } // namespace formsolve

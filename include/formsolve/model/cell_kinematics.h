@@ -58,6 +58,11 @@ namespace formsolve
       Tensor<1, 3> mapped_axis(const unsigned int q,
                                const unsigned int axis) const;
 
+      /// dx/dX at point q from the reference (initial) configuration, in
+      /// the model's dim x dim frame (needs update_jacobians and the
+      /// reference mapping).
+      Tensor<2, dim> deformation_gradient(const unsigned int q) const;
+
       const dealii::FEValues<dim> &fe_values() const { return fv; }
 
     private:

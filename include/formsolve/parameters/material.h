@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <formsolve/parameters/anisotropy.h>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,6 +39,7 @@ namespace formsolve
       double    limiting_strain_rate  = 1e-4;  // 1/s, rigid-zone cutoff
       RigidZone rigid_zone            = RigidZone::smooth;
       double    volumetric_penalty    = 1e4; // alpha (-)
+      Anisotropy anisotropy; // yield criterion and its data
 
       // Ductile fracture (material B of the reference scene by default).
       double            oyane_a          = 0.020; // (-)

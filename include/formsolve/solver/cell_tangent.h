@@ -12,6 +12,7 @@
 #include <deal.II/fe/fe.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <formsolve/material/mandel.h>
 #include <formsolve/model/kinematics.h>
 
 #include <vector>
@@ -47,6 +48,11 @@ namespace formsolve
       void add_general(const unsigned int                     q,
                        const std::vector<model::ShapeStrain> &B,
                        const dealii::SymmetricTensor<4, 3>   &C);
+      /// The same with the tangent in Mandel's notation, times @p weight.
+      void add_general(const unsigned int                     q,
+                       const std::vector<model::ShapeStrain> &B,
+                       const material::Mandel6x6             &C,
+                       const double                           weight);
 
       /// Volumetric penalty at point @p q of the reduced rule:
       /// weight tr_i tr_j.

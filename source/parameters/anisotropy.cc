@@ -1,0 +1,180 @@
+#include <deal.II/base/utilities.h>
+
+#include <formsolve/parameters/anisotropy.h>
+#include <formsolve/parameters/choice.h>
+#include <formsolve/parameters/require.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    using namespace dealii::Patterns;
+
+    namespace
+    {
+      const Choice<YieldCriterion> criterion_names{
+        {"von Mises", YieldCriterion::von_mises},
+        {"Hill48", YieldCriterion::hill48}};
+      const Choice<HillCalibration> calibration_names{
+        {"r-values", HillCalibration::r_values},
+        {"yield stresses", HillCalibration::yield_stresses}};
+      const Choice<TransverseShear> shear_names{
+        {"equal to N", TransverseShear::equal_to_n},
+        {"isotropic", TransverseShear::isotropic}};
+      const Choice<DamageNormalisation> normalisation_names{
+        {"normal anisotropy", DamageNormalisation::normal_anisotropy},
+        {"rolling direction", DamageNormalisation::rolling_direction}};
+
+      std::vector<double> numbers(const std::string &list)
+      {
+        return dealii::Utilities::string_to_double(
+          dealii::Utilities::split_string_list(list, ','));
+      }
+
+      std::string joined(const std::vector<double> &v)
+      {
+        std::ostringstream s;
+        for (std::size_t i = 0; i < v.size(); ++i)
+          s << (i ? ", " : "") << v[i];
+        return s.str();
+      }
+    } // namespace
+
+    bool Anisotropy::planar() const
+    {
+      if (criterion != YieldCriterion::hill48)
+        return false;
+      // r0 = r45 = r90, or sigma45 = sigma90 = sigma0: isotropic in-plane.
+      if (calibration == HillCalibration::r_values)
+        return r_values.size() == 3 &&
+               (r_values[1] != r_values[0] || r_values[2] != r_values[0]);
+      return yield_stress_ratios.size() >= 2 &&
+             (yield_stress_ratios[0] != 1 || yield_stress_ratios[1] != 1);
+    }
+
+    std::string Anisotropy::describe() const
+    {
+      if (criterion == YieldCriterion::von_mises)
+        return "von Mises";
+      if (calibration == HillCalibration::r_values)
+        return "Hill48 from r-values " + joined(r_values);
+      return "Hill48 from yield stress ratios " + joined(yield_stress_ratios) +
+             (yield_stress_ratios.size() == 2 ?
+                " (sigma_b/sigma0 = 1 assumed)" :
+                "");
+    }
+
+    void Anisotropy::declare(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Yield criterion",
+        "von Mises",
+        Selection(criterion_names.pattern()),
+        "von Mises, or Hill's 1948 quadratic anisotropy normalised so that "
+        "the flow stress is the rolling direction's uniaxial one (G + H = "
+        "1: a flow curve from an RD tensile test is used as it is).");
+      prm.declare_entry(
+        "Hill calibration",
+        "r-values",
+        Selection(calibration_names.pattern()),
+        "How Hill48's coefficients are found: from the R-values, or from the "
+        "Yield stress ratios. Hill48 cannot match both for most alloys; the "
+        "run summary prints F, G, H, L, M, N and the r-values and stress "
+        "ratios at 0, 45 and 90 degrees that follow.");
+      prm.declare_entry(
+        "R-values",
+        "1",
+        List(Double(), 1, 3),
+        "Lankford coefficients (width over thickness strain of a tensile "
+        "test, -): one normal r, or r0, r45, r90 (0, 45, 90 degrees to the "
+        "rolling direction). Planar data (not all equal) need a 3-D model.");
+      prm.declare_entry(
+        "Yield stress ratios",
+        "",
+        List(Double(), 0, 3),
+        "sigma45/sigma0, sigma90/sigma0 and optionally sigma_b/sigma0 "
+        "(uniaxial flow stresses at 45 and 90 degrees to the rolling "
+        "direction and the balanced-biaxial one, over the RD flow stress, "
+        "-); without sigma_b/sigma0 it is taken as 1 (balanced biaxial, "
+        "equivalently through-thickness, as strong as RD), and the summary "
+        "says so. For Hill calibration = yield stresses.");
+      prm.declare_entry(
+        "Transverse shear",
+        "equal to N",
+        Selection(shear_names.pattern()),
+        "Hill's L and M (shear in the planes through the normal), which "
+        "in-plane tests do not fix: equal to N (the common choice; transverse "
+        "isotropy about the normal either way) or isotropic (3/2, von "
+        "Mises's). They matter only where the sheet is sheared through its "
+        "thickness, over tool radii.");
+      prm.declare_entry("Rolling direction",
+                        "0",
+                        Double(-360, 360),
+                        "Angle of the rolling direction from the x axis in "
+                        "the sheet plane (degrees), 3-D models.");
+      prm.declare_entry(
+        "Fracture constants normalisation",
+        "normal anisotropy",
+        Selection(normalisation_names.pattern()),
+        "The equivalent stress and strain Oyane a, b and the Cockcroft-"
+        "Latham critical value were calibrated in. normal anisotropy: "
+        "Hill's sigma_bar^2 = 3/(2(2+r)) [r(s1-s2)^2 + (s2-s3)^2 + "
+        "(s3-s1)^2] (the reference materials' constants), converted to "
+        "formsolve's with k = sqrt(2(2+r)/(3(1+r))): a/k, b/k^2, C/k "
+        "(r the mean r-value; no change for von Mises). rolling direction: "
+        "formsolve's own (G + H = 1), used as given.");
+    }
+
+    void Anisotropy::parse(dealii::ParameterHandler &prm)
+    {
+      criterion           = criterion_names.parse(prm.get("Yield criterion"));
+      calibration         = calibration_names.parse(prm.get("Hill calibration"));
+      r_values            = numbers(prm.get("R-values"));
+      yield_stress_ratios = numbers(prm.get("Yield stress ratios"));
+      transverse_shear    = shear_names.parse(prm.get("Transverse shear"));
+      rolling_direction   = prm.get_double("Rolling direction");
+      damage_normalisation =
+        normalisation_names.parse(prm.get("Fracture constants normalisation"));
+    }
+
+    void Anisotropy::validate() const
+    {
+      require(r_values.size() == 1 || r_values.size() == 3,
+              "Material/R-values",
+              "needs one normal r or three values r0, r45, r90, got " +
+                std::to_string(r_values.size()));
+      for (const double r : r_values)
+        require_positive(r, "Material/R-values", "-");
+      if (criterion == YieldCriterion::hill48 &&
+          calibration == HillCalibration::yield_stresses)
+        {
+          require(yield_stress_ratios.size() >= 2,
+                  "Material/Yield stress ratios",
+                  "needs sigma45/sigma0 and sigma90/sigma0 (and optionally "
+                  "sigma_b/sigma0) for Hill calibration = yield stresses");
+          for (const double s : yield_stress_ratios)
+            require_positive(s, "Material/Yield stress ratios", "-");
+          // F, G, H, N > 0 bounds a convex criterion that Hill48 with these
+          // ratios gives (theory.md, section 3a).
+          const auto  &v  = yield_stress_ratios;
+          const double b  = v.size() > 2 ? v[2] : 1.;
+          const double s9 = 1 / (v[1] * v[1]), sb = 1 / (b * b);
+          const double F = (s9 + sb - 1) / 2, G = (1 + sb - s9) / 2,
+                       H = (1 + s9 - sb) / 2;
+          const double N = 2 / (v[0] * v[0]) - (F + G) / 2;
+          require(F > 0 && G > 0 && H > 0 && N > 0 &&
+                    F * G + G * H + H * F > 0,
+                  "Material/Yield stress ratios",
+                  "give no convex Hill48 criterion (F = " + str(F) +
+                    ", G = " + str(G) + ", H = " + str(H) + ", N = " + str(N) +
+                    "); check the ratios");
+        }
+      require(std::isfinite(rolling_direction),
+              "Material/Rolling direction",
+              "must be finite");
+    }
+  } // namespace parameters
+} // namespace formsolve
