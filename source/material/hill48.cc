@@ -1,6 +1,7 @@
 #include <formsolve/material/hill48.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace formsolve
 {
@@ -53,12 +54,12 @@ namespace formsolve
       if (a.criterion == YieldCriterion::von_mises)
         return isotropic();
       if (a.calibration == HillCalibration::r_values)
-        return a.r_values.size() == 1 ?
-                 from_normal_r(a.r_values[0], a.transverse_shear) :
-                 from_r_values(a.r_values[0],
-                               a.r_values[1],
-                               a.r_values[2],
-                               a.transverse_shear);
+        return a.r_values.size() == 1
+                 ? from_normal_r(a.r_values[0], a.transverse_shear)
+                 : from_r_values(a.r_values[0],
+                                 a.r_values[1],
+                                 a.r_values[2],
+                                 a.transverse_shear);
       const auto &v = a.yield_stress_ratios;
       return from_yield_stresses(v[0],
                                  v[1],
@@ -85,6 +86,19 @@ namespace formsolve
       for (unsigned int r = 3; r < 6; ++r)
         S[r][r] = std::sqrt(1.5 * q[r][r]);
       return S;
+    }
+
+    std::string Hill48::summary() const
+    {
+      std::ostringstream s;
+      s << "hill_F = " << F << "\nhill_G = " << G << "\nhill_H = " << H
+        << "\nhill_L = " << L << "\nhill_M = " << M << "\nhill_N = " << N;
+      for (const int angle : {0, 45, 90})
+        s << "\nr" << angle << " = " << r_value(angle * M_PI / 180);
+      for (const int angle : {45, 90})
+        s << "\nstress_ratio_" << angle << " = "
+          << stress_ratio(angle * M_PI / 180);
+      return s.str();
     }
 
     double Hill48::mean_r() const

@@ -42,10 +42,10 @@ namespace formsolve
       for (unsigned int s = 0; s < 6; ++s)
         {
           Mandel6 e{};
-          e[s]                          = 1;
-          const SymmetricTensor<2, 3> E = from_mandel(e);
+          e[s]                           = 1;
+          const SymmetricTensor<2, 3> E  = from_mandel(e);
           Tensor<2, 3>                RE = R * Tensor<2, 3>(E) * transpose(R);
-          const Mandel6 t               = to_mandel(symmetrize(RE));
+          const Mandel6               t  = to_mandel(symmetrize(RE));
           for (unsigned int r = 0; r < 6; ++r)
             T[r][s] = t[r];
         }

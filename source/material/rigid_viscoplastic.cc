@@ -56,10 +56,10 @@ namespace formsolve
                                              const bool   newton) const
     {
       PointResponse out;
-      const double  rate = std::sqrt(2. / 3. * (e * e));
-      out.equivalent_strain_rate       = rate;
-      out.strain_rate_deviator         = e;
-      out.dual_rate                    = rate;
+      const double  rate         = std::sqrt(2. / 3. * (e * e));
+      out.equivalent_strain_rate = rate;
+      out.strain_rate_deviator   = e;
+      out.dual_rate              = rate;
 
       if (smooth)
         {

@@ -26,14 +26,12 @@ namespace formsolve
         , values(quadrature.size())
     {
       if (reference != nullptr)
-        reference_fv =
-          std::make_unique<FEValues<dim>>(*reference,
-                                          fe,
-                                          quadrature,
-                                          update_JxW_values |
-                                            (extra & update_jacobians) |
-                                            (kinematics.update_flags() &
-                                             update_quadrature_points));
+        reference_fv = std::make_unique<FEValues<dim>>(
+          *reference,
+          fe,
+          quadrature,
+          update_JxW_values | (extra & update_jacobians) |
+            (kinematics.update_flags() & update_quadrature_points));
       component.resize(fe.n_dofs_per_cell());
       for (unsigned int i = 0; i < component.size(); ++i)
         component[i] = fe.system_to_component_index(i).first;

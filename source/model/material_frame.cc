@@ -15,8 +15,8 @@ namespace formsolve
       Tensor<2, dim> X = F;
       for (unsigned int k = 0; k < 50; ++k)
         {
-          const double   z    = std::pow(std::abs(determinant(X)), -1. / dim);
-          Tensor<2, dim> next = 0.5 * (z * X + transpose(invert(X)) / z);
+          const double   z      = std::pow(std::abs(determinant(X)), -1. / dim);
+          Tensor<2, dim> next   = 0.5 * (z * X + transpose(invert(X)) / z);
           const double   change = (next - X).norm();
           X                     = next;
           if (change < 1e-14 * std::sqrt(double(dim)))
@@ -58,8 +58,8 @@ namespace formsolve
       return R3 * start;
     }
 
-#define INSTANTIATE(dim)                                                       \
-  template class MaterialFrame<dim>;                                           \
+#define INSTANTIATE(dim)             \
+  template class MaterialFrame<dim>; \
   template Tensor<2, dim> polar_rotation(const Tensor<2, dim> &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE

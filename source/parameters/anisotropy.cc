@@ -62,9 +62,8 @@ namespace formsolve
       if (calibration == HillCalibration::r_values)
         return "Hill48 from r-values " + joined(r_values);
       return "Hill48 from yield stress ratios " + joined(yield_stress_ratios) +
-             (yield_stress_ratios.size() == 2 ?
-                " (sigma_b/sigma0 = 1 assumed)" :
-                "");
+             (yield_stress_ratios.size() == 2 ? " (sigma_b/sigma0 = 1 assumed)"
+                                              : "");
     }
 
     void Anisotropy::declare(dealii::ParameterHandler &prm)
@@ -130,9 +129,9 @@ namespace formsolve
 
     void Anisotropy::parse(dealii::ParameterHandler &prm)
     {
-      criterion           = criterion_names.parse(prm.get("Yield criterion"));
-      calibration         = calibration_names.parse(prm.get("Hill calibration"));
-      r_values            = numbers(prm.get("R-values"));
+      criterion   = criterion_names.parse(prm.get("Yield criterion"));
+      calibration = calibration_names.parse(prm.get("Hill calibration"));
+      r_values    = numbers(prm.get("R-values"));
       yield_stress_ratios = numbers(prm.get("Yield stress ratios"));
       transverse_shear    = shear_names.parse(prm.get("Transverse shear"));
       rolling_direction   = prm.get_double("Rolling direction");
@@ -165,8 +164,7 @@ namespace formsolve
           const double F = (s9 + sb - 1) / 2, G = (1 + sb - s9) / 2,
                        H = (1 + s9 - sb) / 2;
           const double N = 2 / (v[0] * v[0]) - (F + G) / 2;
-          require(F > 0 && G > 0 && H > 0 && N > 0 &&
-                    F * G + G * H + H * F > 0,
+          require(F > 0 && G > 0 && H > 0 && N > 0 && F * G + G * H + H * F > 0,
                   "Material/Yield stress ratios",
                   "give no convex Hill48 criterion (F = " + str(F) +
                     ", G = " + str(G) + ", H = " + str(H) + ", N = " + str(N) +

@@ -167,9 +167,9 @@ namespace formsolve
       rigid_zone            = rigid_zone_names.parse(prm.get("Rigid zone"));
       volumetric_penalty    = prm.get_double("Volumetric penalty");
       anisotropy.parse(prm);
-      oyane_a               = prm.get_double("Oyane a");
-      oyane_b               = prm.get_double("Oyane b");
-      cockcroft_latham      = prm.get_double("Cockcroft-Latham critical value");
+      oyane_a             = prm.get_double("Oyane a");
+      oyane_b             = prm.get_double("Oyane b");
+      cockcroft_latham    = prm.get_double("Cockcroft-Latham critical value");
       fracture            = fracture_names.parse(prm.get("Fracture criterion"));
       forming_limit_table = parse_table(prm.get("Forming limit table"));
       safety_margin       = prm.get_double("Safety margin");

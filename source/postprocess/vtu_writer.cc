@@ -51,6 +51,40 @@ namespace formsolve
         unsigned int c;
       };
 
+      /// Axis @p axis (0: RD, 2: ND) of the orthotropy frame, from the
+      /// displacement's gradient in the current configuration: F = (I -
+      /// grad u)^-1.
+      template <int dim>
+      class FrameAxis : public DataPostprocessorVector<dim>
+      {
+      public:
+        FrameAxis(const std::string               &name,
+                  const unsigned int               axis,
+                  const model::MaterialFrame<dim> &frame)
+            : DataPostprocessorVector<dim>(name, update_gradients)
+            , axis(axis)
+            , frame(frame)
+        {}
+        void
+        evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &in,
+                              std::vector<Vector<double>> &out) const override
+        {
+          for (unsigned int q = 0; q < out.size(); ++q)
+            {
+              Tensor<2, dim> inverse_F = unit_symmetric_tensor<dim>();
+              for (unsigned int i = 0; i < dim; ++i)
+                inverse_F[i] -= in.solution_gradients[q][i];
+              const Tensor<2, 3> R = frame(invert(inverse_F));
+              for (unsigned int d = 0; d < dim; ++d)
+                out[q](d) = R[d][axis];
+            }
+        }
+
+      private:
+        unsigned int                     axis;
+        const model::MaterialFrame<dim> &frame;
+      };
+
       /// Adds the fields of @p f to @p out; cell averages of the history go
       /// to @p cell_data, which must outlive the patches.
       template <int dim, class DataOutType>
@@ -58,7 +92,8 @@ namespace formsolve
                       const DoFHandler<dim>                        &dof_handler,
                       const OutputFields<dim>                      &f,
                       std::vector<Vector<float>>                   &cell_data,
-                      std::vector<std::unique_ptr<Component<dim>>> &scalars)
+                      std::vector<std::unique_ptr<Component<dim>>> &scalars,
+                      std::vector<std::unique_ptr<FrameAxis<dim>>> &axes)
       {
         out.attach_dof_handler(dof_handler);
         const std::vector<
@@ -80,6 +115,15 @@ namespace formsolve
               std::make_unique<Component<dim>>(s.name, s.component));
             out.add_data_vector(*s.values, *scalars.back());
           }
+        if (f.frame)
+          for (const auto &[name, axis] :
+               {std::pair<const char *, unsigned int>{"rolling_direction", 0},
+                {"normal_direction", 2}})
+            {
+              axes.push_back(
+                std::make_unique<FrameAxis<dim>>(name, axis, *f.frame));
+              out.add_data_vector(*f.displacement, *axes.back());
+            }
 
         // Cell averages of the quadrature-point history.
         const auto        &tria = dof_handler.get_triangulation();
@@ -129,7 +173,8 @@ namespace formsolve
         DataOut<dim>                                 out;
         std::vector<Vector<float>>                   cell_data;
         std::vector<std::unique_ptr<Component<dim>>> scalars;
-        add_fields(out, dof_handler, fields, cell_data, scalars);
+        std::vector<std::unique_ptr<FrameAxis<dim>>> axes;
+        add_fields(out, dof_handler, fields, cell_data, scalars, axes);
         out.set_flags(fast());
         out.build_patches(mapping,
                           dof_handler.get_fe().degree,
@@ -153,7 +198,8 @@ namespace formsolve
             SectionDataOut                             out;
             std::vector<Vector<float>>                 cell_data;
             std::vector<std::unique_ptr<Component<2>>> scalars;
-            add_fields(out, dof_handler, fields, cell_data, scalars);
+            std::vector<std::unique_ptr<FrameAxis<2>>> axes;
+            add_fields(out, dof_handler, fields, cell_data, scalars, axes);
             out.set_flags(fast());
             out.build_patches(mapping, 1, DataOut<2>::no_curved_cells);
             revolved_records.emplace_back(time,

@@ -10,6 +10,7 @@
 #include <formsolve/refinement/adapt.h>
 #include <formsolve/simulation/time_loop.h>
 
+#include <algorithm>
 #include <chrono>
 #include <iomanip>
 #include <sstream>
@@ -95,10 +96,12 @@ namespace formsolve
       auto nodal = contact_fields.scalars();
       for (const auto &f : sheet.nodal_fields(state))
         nodal.push_back(f);
-      postprocess::OutputFields<dim> f{&state.velocity_ghost,
+      const model::MaterialFrame<dim> frame(material.rolling_direction());
+      postprocess::OutputFields<dim>  f{&state.velocity_ghost,
                                        &state.displacement_ghost,
                                        nodal,
-                                       &state.history};
+                                       &state.history,
+                                       material.isotropic() ? nullptr : &frame};
       writer->write(state.step,
                     state.time,
                     state.dof_handler,
@@ -182,6 +185,21 @@ namespace formsolve
             << step_solver.strategy_name() << ", forces scaled by "
             << prm.geometry.symmetry_factor() << " to the full part; BLAS "
             << app::blas_kernel() << "\n";
+      if (!material.isotropic())
+        {
+          // One line: what the Hill coefficients imply, and the fracture
+          // constants as used.
+          std::string hill = material.hill().summary();
+          for (std::size_t p = hill.find('\n'); p != std::string::npos;
+               p             = hill.find('\n', p))
+            hill.replace(p, 1, ", ");
+          pcout << "material: " << prm.material.anisotropy.describe() << ": "
+                << hill << "; RD at "
+                << prm.material.anisotropy.rolling_direction
+                << " deg to x; fracture constants converted with k = "
+                << damage.conversion() << ": a = " << damage.a_used()
+                << ", b = " << damage.b_used() << "\n";
+        }
       if (const auto advice = app::blas_advice(); !advice.empty())
         pcout << "note: OpenBLAS runs its generic Prescott kernels on this "
                  "CPU, which makes the factorisations about 2x slower; start "

@@ -143,7 +143,11 @@ namespace formsolve
         << "\nmin_thickness = " << sh.min_thickness
         << "\nmin_thickness_R0 = " << sh.min_thickness_radius
         << "\nmax_thinning_percent = " << sh.max_thinning
-        << "\nfracture_criterion = "
+        << "\nyield_criterion = " << prm.material.anisotropy.describe() << "\n"
+        << material.hill().summary()
+        << "\nfracture_constants_conversion_k = " << damage.conversion()
+        << "\noyane_a_used = " << damage.a_used()
+        << "\noyane_b_used = " << damage.b_used() << "\nfracture_criterion = "
         << (damage.criterion() == parameters::FractureCriterion::oyane ? "oyane"
             : damage.criterion() == parameters::FractureCriterion::none
               ? "none"

@@ -75,19 +75,19 @@ namespace formsolve
                                   DualStress                      *dual,
                                   const CellScatter<dim> *scatter) const
     {
-      const auto         &fe = dof_handler.get_fe();
-      const unsigned int  n  = fe.n_dofs_per_cell();
+      const auto        &fe = dof_handler.get_fe();
+      const unsigned int n  = fe.n_dofs_per_cell();
       // Hill's criterion needs the deformation gradient from the reference
       // configuration for the orthotropy frame.
-      const bool          hill = !material.isotropic();
-      CellKinematics<dim> kf(kinematics,
+      const bool                     hill = !material.isotropic();
+      CellKinematics<dim>            kf(kinematics,
                              mapping,
                              fe,
                              full,
                              hill ? update_jacobians : update_default,
                              hill ? &reference_mapping : nullptr);
       material::HillOrientation<dim> orientation(material);
-      CellKinematics<dim> kr(kinematics,
+      CellKinematics<dim>            kr(kinematics,
                              mapping,
                              fe,
                              reduced,
@@ -124,9 +124,12 @@ namespace formsolve
             for (unsigned int q = 0; q < kf.n_points(); ++q)
               {
                 const auto m =
-                  hill ? material.evaluate(
-                           D[q], h[q]->strain, dt, newton, orientation.map(q)) :
-                         material.evaluate(D[q], h[q]->strain, dt, newton);
+                  hill ? material.evaluate(D[q],
+                                           h[q]->strain,
+                                           dt,
+                                           newton,
+                                           orientation.map(q))
+                       : material.evaluate(D[q], h[q]->strain, dt, newton);
                 const double dV = kf.dV(q);
                 kf.shape_strains(q, B);
                 // Stress-velocity linearisation: (4/9) s/rate^3 D'(x)D' becomes
@@ -158,8 +161,12 @@ namespace formsolve
                 if (matrix && product_form)
                   tangent.add_deviatoric(q, B, mu, s, u);
                 else if (matrix && hill)
-                  tangent.add_general(
-                    q, B, material.tangent(m, w_rate, orientation.map(q)), dV);
+                  tangent.add_general(q,
+                                      B,
+                                      material.tangent(m,
+                                                       w_rate,
+                                                       orientation.map(q)),
+                                      dV);
                 else if (matrix)
                   tangent.add_general(q, B, material.tangent(m, w_rate) * dV);
               }

@@ -81,8 +81,8 @@ namespace formsolve
     template <int dim>
     void CellTangent<dim>::add_general(const unsigned int                     q,
                                        const std::vector<model::ShapeStrain> &B,
-                                       const material::Mandel6x6             &C6,
-                                       const double weight)
+                                       const material::Mandel6x6 &C6,
+                                       const double               weight)
     {
       general_form       = true;
       const double root2 = std::sqrt(2.);

@@ -35,16 +35,16 @@ namespace formsolve
                                      const double           dt,
                                      HistoryStorage<dim>   &history) const
     {
-      const auto         &fe = dof_handler.get_fe();
-      const bool          hill = !material.isotropic();
-      CellKinematics<dim> kf(kinematics,
+      const auto                        &fe   = dof_handler.get_fe();
+      const bool                         hill = !material.isotropic();
+      CellKinematics<dim>                kf(kinematics,
                              mapping,
                              fe,
                              full,
                              update_jacobians,
                              hill ? &reference_mapping : nullptr);
-      material::HillOrientation<dim> orientation(material);
-      CellKinematics<dim> kr(kinematics,
+      material::HillOrientation<dim>     orientation(material);
+      CellKinematics<dim>                kr(kinematics,
                              mapping,
                              fe,
                              reduced,
@@ -76,9 +76,12 @@ namespace formsolve
             for (unsigned int q = 0; q < kf.n_points(); ++q)
               {
                 const auto r =
-                  hill ? material.evaluate(
-                           D[q], h[q]->strain, dt, false, orientation.map(q)) :
-                         material.evaluate(D[q], h[q]->strain, dt, false);
+                  hill ? material.evaluate(D[q],
+                                           h[q]->strain,
+                                           dt,
+                                           false,
+                                           orientation.map(q))
+                       : material.evaluate(D[q], h[q]->strain, dt, false);
                 if (damage)
                   {
                     const auto d = damage->increment(

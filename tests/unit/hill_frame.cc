@@ -62,11 +62,11 @@ namespace
   {
     const QGauss<3>                    rule(2);
     model::CellKinematics<3>           k(state.kinematics,
-                                 *state.mapping,
-                                 state.fe,
-                                 rule,
-                                 update_jacobians,
-                                 &state.reference_mapping);
+                               *state.mapping,
+                               state.fe,
+                               rule,
+                               update_jacobians,
+                               &state.reference_mapping);
     material::HillOrientation<3>       o(material);
     const model::MaterialFrame<3>      frame(material.rolling_direction());
     const SymmetricTensor<2, 3>        D = symmetrize(L);
@@ -83,8 +83,7 @@ namespace
                           0.1,
                           0.1,
                           false,
-                          fixed ? material.hill_map(frame.initial()) :
-                                  o.map(q))
+                          fixed ? material.hill_map(frame.initial()) : o.map(q))
                 .deviatoric_stress);
         }
     return out;
@@ -100,8 +99,8 @@ int main(int argc, char **argv)
     Tensor<2, 3> U;
     U[0][0] = 1.3, U[1][1] = 0.8, U[2][2] = 1.1, U[0][1] = U[1][0] = 0.2;
     U[1][2] = U[2][1] = -0.1;
-    Tensor<2, 3> R = rotation_about_y(0.7);
-    R              = R * transpose(rotation_about_y(0.3)) * R; // any rotation
+    Tensor<2, 3> R    = rotation_about_y(0.7);
+    R = R * transpose(rotation_about_y(0.3)) * R; // any rotation
     test::close("polar rotation of R U",
                 (model::polar_rotation<3>(R * U) - R).norm(),
                 0,
@@ -164,11 +163,10 @@ int main(int argc, char **argv)
           k.reinit(cell);
           o.reinit(k);
           for (unsigned int q = 0; q < k.n_points(); ++q)
-            worst = std::max(
-              worst,
-              (o.frame(q) -
-               R * model::MaterialFrame<3>(M_PI / 6).initial())
-                .norm());
+            worst = std::max(worst,
+                             (o.frame(q) -
+                              R * model::MaterialFrame<3>(M_PI / 6).initial())
+                               .norm());
         }
     test::close("frame = R times the initial frame",
                 Utilities::MPI::max(worst, MPI_COMM_WORLD),
@@ -181,8 +179,8 @@ int main(int argc, char **argv)
     {
       const SymmetricTensor<2, 3> expected =
         symmetrize(R * Tensor<2, 3>(before[i]) * transpose(R));
-      turned = std::max(turned,
-                        (after[i] - expected).norm() / before[i].norm());
+      turned =
+        std::max(turned, (after[i] - expected).norm() / before[i].norm());
       invariant_fixed =
         std::max(invariant_fixed,
                  std::abs(fixed[i].norm() / before[i].norm() - 1) +
@@ -194,8 +192,7 @@ int main(int argc, char **argv)
               0,
               1e-10);
   const double f = Utilities::MPI::max(invariant_fixed, MPI_COMM_WORLD);
-  std::cout << "a frame fixed in space changes the invariants by " << f
-            << "\n";
+  std::cout << "a frame fixed in space changes the invariants by " << f << "\n";
   test::close("a fixed frame is detected", f > 0.01, 1, 0);
   return test::result();
 }

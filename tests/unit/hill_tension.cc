@@ -3,9 +3,10 @@
 // along x, RD at the angle theta to x.
 // - Uniaxial tension at 0, 45 and 90 degrees to RD, with Hill from r0, r45,
 //   r90 and from yield stress ratios: the measured r-value (deviatoric width
-//   over thickness strain rate) equals Hill's r(theta), and the end force over the
-//   cross-section, divided by the flow stress at the point, equals Hill's
-//   sigma_theta/sigma_0, each within 0.5 % (they agree to the 6 digits printed).
+//   over thickness strain rate) equals Hill's r(theta), and the end force over
+//   the cross-section, divided by the flow stress at the point, equals Hill's
+//   sigma_theta/sigma_0, each within 0.5 % (they agree to the 6 digits
+//   printed).
 // - Plane-strain tension along RD (sides held): sigma_1/sigma_bar equals
 //   1/sqrt(G + F H/(F + H)) within 0.5 %.
 // - The calibration chain: homogeneous uniaxial and plane-strain tension of
@@ -19,11 +20,11 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
+#include <formsolve/material/damage.h>
 #include <formsolve/material/hill_orientation.h>
 #include <formsolve/solver/assembler.h>
 #include <formsolve/solver/mumps_solver.h>
 #include <formsolve/solver/newton_solver.h>
-#include <formsolve/material/damage.h>
 #include <formsolve/state/history_update.h>
 #include <formsolve/state/state.h>
 
@@ -79,15 +80,16 @@ namespace
             for (unsigned int i = 0; i < dofs.size(); ++i)
               {
                 const Point<3>     p = points[dofs[i]];
-                const unsigned int c = state.fe.system_to_component_index(i).first;
-                const bool left = std::abs(p[0] + L / 2) < 1e-9,
-                           right = std::abs(p[0] - L / 2) < 1e-9,
-                           side = std::abs(std::abs(p[1]) - W / 2) < 1e-9,
+                const unsigned int c =
+                  state.fe.system_to_component_index(i).first;
+                const bool left   = std::abs(p[0] + L / 2) < 1e-9,
+                           right  = std::abs(p[0] - L / 2) < 1e-9,
+                           side   = std::abs(std::abs(p[1]) - W / 2) < 1e-9,
                            bottom = std::abs(p[2]) < 1e-9;
                 if (c == 0 && (left || right))
                   fix(dofs[i], right ? V : 0.);
-                if (c == 1 && (plane_strain ? side :
-                                              left && bottom && p[1] < 0))
+                if (c == 1 &&
+                    (plane_strain ? side : left && bottom && p[1] < 0))
                   fix(dofs[i], 0);
                 if (c == 2 && left && bottom && side)
                   fix(dofs[i], 0);
@@ -232,14 +234,14 @@ namespace
     for (const auto &cell : state.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const QGauss<3>             rule(2);
-          model::CellKinematics<3>    k(state.kinematics,
+          const QGauss<3>                    rule(2);
+          model::CellKinematics<3>           k(state.kinematics,
                                      *state.mapping,
                                      state.fe,
                                      rule,
                                      update_jacobians,
                                      &state.reference_mapping);
-          material::HillOrientation<3> o(material);
+          material::HillOrientation<3>       o(material);
           std::vector<SymmetricTensor<2, 3>> D;
           k.reinit(cell);
           o.reinit(k);
@@ -253,9 +255,9 @@ namespace
     const double area = W * T; // the step is solved on the initial block
     state.advance(dt, update);
     const double oyane = Utilities::MPI::max(
-      state.dof_handler.begin_active()->is_locally_owned() ?
-        state.history.get_data(state.dof_handler.begin_active())[0]->oyane :
-        0.,
+      state.dof_handler.begin_active()->is_locally_owned()
+        ? state.history.get_data(state.dof_handler.begin_active())[0]->oyane
+        : 0.,
       state.comm);
     return {rate[1] / rate[2], force / area / flow, oyane / (dt * rate[0])};
   }
@@ -284,16 +286,16 @@ int main(int argc, char **argv)
       a.calibration         = calibration;
       a.r_values            = {2.1, 1.6, 2.7};
       a.yield_stress_ratios = {1.03, 0.97, 1.15};
-      const auto hill = material::Hill48::from_parameters(a);
+      const auto hill       = material::Hill48::from_parameters(a);
       for (const double theta : {0., 45., 90.})
         {
-          const Measured m = pull(prm, theta, false);
-          const double   t = theta * M_PI / 180;
+          const Measured    m = pull(prm, theta, false);
+          const double      t = theta * M_PI / 180;
           const std::string at =
             " at " + std::to_string(int(theta)) + " deg" +
-            (calibration == parameters::HillCalibration::r_values ?
-               " (r-values)" :
-               " (yield stresses)");
+            (calibration == parameters::HillCalibration::r_values
+               ? " (r-values)"
+               : " (yield stresses)");
           test::close("r-value" + at,
                       m.r_value,
                       hill.r_value(t),
@@ -305,7 +307,9 @@ int main(int argc, char **argv)
           if (calibration == parameters::HillCalibration::r_values)
             test::close("Hill's r" + at,
                         hill.r_value(t),
-                        a.r_values[theta == 0 ? 0 : theta == 45 ? 1 : 2],
+                        a.r_values[theta == 0    ? 0
+                                   : theta == 45 ? 1
+                                                 : 2],
                         1e-12);
           else if (theta > 0)
             test::close("Hill's stress ratio" + at,
@@ -314,7 +318,7 @@ int main(int argc, char **argv)
                         1e-12);
         }
       const Measured ps = pull(prm, 0, true);
-      const double plane =
+      const double   plane =
         1 / std::sqrt(hill.G + hill.F * hill.H / (hill.F + hill.H));
       test::close("plane strain sigma_1/sigma_bar",
                   ps.stress_over_flow_stress,

@@ -27,7 +27,7 @@ namespace formsolve
       /// Hill's, G + H = 1).
       DamageIncrement increment(const dealii::SymmetricTensor<2, 3> &s,
                                 const double                         mean,
-                                const double equivalent,
+                                const double                         equivalent,
                                 const double d_strain) const;
 
       /// The constants as used, after the conversion from the

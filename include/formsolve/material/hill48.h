@@ -17,6 +17,8 @@
 #include <formsolve/material/mandel.h>
 #include <formsolve/parameters/anisotropy.h>
 
+#include <string>
+
 namespace formsolve
 {
   namespace material
@@ -61,6 +63,10 @@ namespace formsolve
       /// law of the mapped rate S D gives Hill's (doc/theory.md, eq. 3b). The
       /// deviatoric projector for von Mises.
       Mandel6x6 root() const;
+
+      /// "key = value" lines: F, G, H, L, M, N, and r and sigma/sigma_0 at
+      /// 0, 45, 90 degrees (run summary; the screen shows the same).
+      std::string summary() const;
 
       /// Mean r-value (r0 + 2 r45 + r90)/4.
       double mean_r() const;

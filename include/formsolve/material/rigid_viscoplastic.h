@@ -5,11 +5,11 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <cmath>
-
 #include <formsolve/material/flow_stress.h>
 #include <formsolve/material/hill48.h>
 #include <formsolve/material/mandel.h>
+
+#include <cmath>
 
 namespace formsolve
 {
@@ -85,7 +85,8 @@ namespace formsolve
       /// Hill's (sqrt(3/2) times the norm of the mapped stress).
       static double equivalent_stress(const PointResponse &m)
       {
-        const SymmetricTensor<2, 3> s = 2. * m.viscosity * m.strain_rate_deviator;
+        const SymmetricTensor<2, 3> s =
+          2. * m.viscosity * m.strain_rate_deviator;
         return std::sqrt(1.5 * (s * s));
       }
 

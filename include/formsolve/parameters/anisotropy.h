@@ -52,7 +52,7 @@ namespace formsolve
       HillCalibration     calibration = HillCalibration::r_values;
       std::vector<double> r_values    = {1.};
       std::vector<double> yield_stress_ratios; // empty: not given
-      TransverseShear     transverse_shear = TransverseShear::equal_to_n;
+      TransverseShear     transverse_shear  = TransverseShear::equal_to_n;
       double              rolling_direction = 0; // degrees from x, 3-D
       DamageNormalisation damage_normalisation =
         DamageNormalisation::normal_anisotropy;

@@ -31,15 +31,15 @@ namespace formsolve
 
     struct Material
     {
-      double    strength_coefficient  = 829;   // K (MPa)
-      double    hardening_exponent    = 0.2;   // n
-      double    prestrain             = 0.002; // eps_0
-      double    rate_sensitivity      = 0;     // m
-      double    reference_strain_rate = 1;     // 1/s
-      double    limiting_strain_rate  = 1e-4;  // 1/s, rigid-zone cutoff
-      RigidZone rigid_zone            = RigidZone::smooth;
-      double    volumetric_penalty    = 1e4; // alpha (-)
-      Anisotropy anisotropy; // yield criterion and its data
+      double     strength_coefficient  = 829;   // K (MPa)
+      double     hardening_exponent    = 0.2;   // n
+      double     prestrain             = 0.002; // eps_0
+      double     rate_sensitivity      = 0;     // m
+      double     reference_strain_rate = 1;     // 1/s
+      double     limiting_strain_rate  = 1e-4;  // 1/s, rigid-zone cutoff
+      RigidZone  rigid_zone            = RigidZone::smooth;
+      double     volumetric_penalty    = 1e4; // alpha (-)
+      Anisotropy anisotropy;                  // yield criterion and its data
 
       // Ductile fracture (material B of the reference scene by default).
       double            oyane_a          = 0.020; // (-)

@@ -6,6 +6,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <formsolve/model/material_frame.h>
 #include <formsolve/parameters/output.h>
 #include <formsolve/state/quadrature_history.h>
 
@@ -35,6 +36,8 @@ namespace formsolve
       const VectorType                 *displacement = nullptr; // ghosted
       std::vector<NodalScalar>          nodal;
       const state::HistoryStorage<dim> *history = nullptr;
+      /// With it, the orthotropy axes RD and ND as vector fields.
+      const model::MaterialFrame<dim> *frame = nullptr;
     };
 
     template <int dim>
