@@ -80,6 +80,13 @@ namespace formsolve
                  {"max_cockcroft_latham", "max_cockcroft_latham_integral"});
         for (const auto &x : where)
           c.push_back("max_cockcroft_latham_" + x);
+        // Column averages through the thickness (section 11a).
+        c.push_back("max_oyane_through_thickness");
+        for (const auto &x : where)
+          c.push_back("max_oyane_through_thickness_" + x);
+        c.push_back("max_cockcroft_latham_through_thickness");
+        for (const auto &x : where)
+          c.push_back("max_cockcroft_latham_through_thickness_" + x);
         for (const auto &z : zone_columns)
           c.push_back(z);
         c.push_back("wall_time");
@@ -155,6 +162,11 @@ namespace formsolve
           table.set("max_oyane_" + where[d], forming.oyane.location[d]);
           table.set("max_cockcroft_latham_" + where[d],
                     forming.cockcroft_latham.location[d]);
+          const auto &c = forming.through_thickness;
+          table.set("max_oyane_through_thickness_" + where[d],
+                    c.oyane.location[d]);
+          table.set("max_cockcroft_latham_through_thickness_" + where[d],
+                    c.cockcroft_latham.location[d]);
         }
       const auto dirs = directions<dim>();
       for (unsigned int i = 0; i < dirs.size(); ++i)
@@ -166,6 +178,10 @@ namespace formsolve
       table.set("max_cockcroft_latham", forming.cockcroft_latham_ratio);
       table.set("max_cockcroft_latham_integral",
                 forming.cockcroft_latham.value);
+      table.set("max_oyane_through_thickness",
+                forming.through_thickness.oyane.value);
+      table.set("max_cockcroft_latham_through_thickness",
+                forming.through_thickness.cockcroft_latham.value);
       for (unsigned int z = 0; z < zone_columns.size(); ++z)
         table.set(zone_columns[z], sheet.zone_count[z]);
       table.set("wall_time",

@@ -152,6 +152,8 @@ namespace formsolve
             }
         for (unsigned int k = 0; k < names.size(); ++k)
           out.add_data_vector(cell_data[k], names[k]);
+        for (const auto &[name, values] : f.cell)
+          out.add_data_vector(*values, name);
       }
     } // namespace
 

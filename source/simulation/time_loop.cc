@@ -97,11 +97,17 @@ namespace formsolve
       for (const auto &f : sheet.nodal_fields(state))
         nodal.push_back(f);
       const model::MaterialFrame<dim> frame(material.rolling_direction());
-      postprocess::OutputFields<dim>  f{&state.velocity_ghost,
-                                       &state.displacement_ghost,
-                                       nodal,
-                                       &state.history,
-                                       material.isotropic() ? nullptr : &frame};
+      column_damage.measure(state, damage, true);
+      postprocess::OutputFields<dim> f{
+        &state.velocity_ghost,
+        &state.displacement_ghost,
+        nodal,
+        &state.history,
+        {{damage.criterion() == parameters::FractureCriterion::cockcroft_latham
+            ? "cockcroft_latham_through_thickness"
+            : "oyane_through_thickness",
+          &column_damage.cell_values()}},
+        material.isotropic() ? nullptr : &frame};
       writer->write(state.step,
                     state.time,
                     state.dof_handler,
@@ -328,13 +334,7 @@ namespace formsolve
         }
       summary.max_penetration =
         std::max(summary.max_penetration, stats.max_penetration);
-      const bool fractured = check_fracture(forming,
-                                            summary.last_damage,
-                                            summary.last_damage_travel,
-                                            summary);
-      summary.last_damage =
-        damage.deciding(forming.oyane.value, forming.cockcroft_latham.value);
-      summary.last_damage_travel = travel;
+      const bool fractured = check_fracture(forming, summary);
       progress.record(wall, travel);
       pcout << "step " << std::setw(4) << state.step << "  t=" << std::fixed
             << std::setprecision(3) << state.time << " s  travel=" << travel
@@ -420,12 +420,26 @@ namespace formsolve
             << summary.end_reason << "; results in " << prm.output.directory
             << std::endl;
       if (damage.criterion() != parameters::FractureCriterion::none)
-        pcout << (summary.critical_stroke >= 0
-                    ? "critical stroke (fracture predicted): " +
-                        std::to_string(summary.critical_stroke) + " mm"
-                    : std::string(
-                        "no fracture predicted up to the end of the run"))
-              << "; minimum thickness " << sheet.summary().min_thickness
+        {
+          const auto stroke = [](const double s) {
+            return s >= 0 ? std::to_string(s) + " mm" : std::string("none");
+          };
+          pcout << (summary.critical_stroke >= 0
+                      ? "critical stroke (fracture predicted): " +
+                          std::to_string(summary.critical_stroke) + " mm"
+                      : std::string(
+                          "no fracture predicted up to the end of the run"))
+                << " by the "
+                << (prm.material.fracture_measure ==
+                        parameters::FractureMeasure::local
+                      ? "local maximum"
+                      : "through-thickness average")
+                << " (through-thickness average: "
+                << stroke(summary.through_thickness.stroke)
+                << ", local maximum: " << stroke(summary.local.stroke) << ")";
+        }
+      if (damage.criterion() != parameters::FractureCriterion::none)
+        pcout << "; minimum thickness " << sheet.summary().min_thickness
               << " mm (thinning " << sheet.summary().max_thinning << " %)"
               << std::endl;
       timer.print_summary();

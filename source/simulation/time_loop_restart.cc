@@ -68,8 +68,15 @@ namespace formsolve
         {"summary.max_penetration", exact_text(s.max_penetration)},
         {"summary.critical_stroke", exact_text(s.critical_stroke)},
         {"summary.fracture_location", s.fracture_location},
-        {"summary.last_damage", exact_text(s.last_damage)},
-        {"summary.last_damage_travel", exact_text(s.last_damage_travel)},
+        {"summary.local.stroke", exact_text(s.local.stroke)},
+        {"summary.local.location", s.local.location},
+        {"summary.local.last", exact_text(s.local.last)},
+        {"summary.local.last_travel", exact_text(s.local.last_travel)},
+        {"summary.through.stroke", exact_text(s.through_thickness.stroke)},
+        {"summary.through.location", s.through_thickness.location},
+        {"summary.through.last", exact_text(s.through_thickness.last)},
+        {"summary.through.last_travel",
+         exact_text(s.through_thickness.last_travel)},
         {"time_step", exact_text(step_solver.time_step())},
         {"last_output_step", std::to_string(last_output_step)},
         {"refinement_rows",
@@ -102,9 +109,17 @@ namespace formsolve
       s.max_penetration         = std::stod(m.at("summary.max_penetration"));
       s.critical_stroke         = std::stod(m.at("summary.critical_stroke"));
       s.fracture_location       = m.at("summary.fracture_location");
-      s.last_damage             = std::stod(m.at("summary.last_damage"));
-      s.last_damage_travel      = std::stod(m.at("summary.last_damage_travel"));
-      s.steps                   = state.step;
+      for (auto &[w, name] :
+           {std::pair<RunSummary::Watch *, std::string>{&s.local, "local"},
+            {&s.through_thickness, "through"}})
+        {
+          const std::string k = "summary." + name + ".";
+          w->stroke           = std::stod(m.at(k + "stroke"));
+          w->location         = m.at(k + "location");
+          w->last             = std::stod(m.at(k + "last"));
+          w->last_travel      = std::stod(m.at(k + "last_travel"));
+        }
+      s.steps = state.step;
       step_solver.set_time_step(std::stod(m.at("time_step")));
       last_output_step = std::stoi(m.at("last_output_step"));
       refinement_rows  = std::stoul(m.at("refinement_rows"));

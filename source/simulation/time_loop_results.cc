@@ -11,10 +11,12 @@
 
 #include <unistd.h>
 
+#include <array>
 #include <climits>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 namespace formsolve
 {
@@ -69,38 +71,67 @@ namespace formsolve
       m.cockcroft_latham = maximum(state, &Field::cockcroft_latham);
       m.cockcroft_latham_ratio =
         damage.cockcroft_latham(m.cockcroft_latham.value);
+      m.through_thickness = column_damage.measure(state, damage, false);
       return m;
     }
 
     template <int dim>
     bool
     TimeLoop<dim>::check_fracture(const postprocess::FormingMeasures<dim> &m,
-                                  const double previous,
-                                  const double previous_travel,
-                                  RunSummary  &summary)
+                                  RunSummary &summary)
     {
-      const auto   criterion = damage.criterion();
-      const double value =
-        damage.deciding(m.oyane.value, m.cockcroft_latham.value);
-      if (criterion == parameters::FractureCriterion::none ||
-          summary.critical_stroke >= 0 || value < 1)
+      const auto criterion = damage.criterion();
+      if (criterion == parameters::FractureCriterion::none)
         return false;
-      // Linear in the punch travel between the two steps.
-      const double travel     = state.tools.punch_travel();
-      summary.critical_stroke = previous_travel + (1 - previous) /
-                                                    (value - previous) *
-                                                    (travel - previous_travel);
-      const auto &location = criterion == parameters::FractureCriterion::oyane
-                               ? m.oyane.location
-                               : m.cockcroft_latham.location;
-      std::ostringstream s;
-      for (unsigned int d = 0; d < dim; ++d)
-        s << (d ? " " : "") << location[d];
-      summary.fracture_location = s.str();
-      pcout << "fracture predicted: " << criterion_name(criterion)
-            << " reaches 1 at punch travel " << summary.critical_stroke
-            << " mm, at " << where(location) << std::endl;
-      return true;
+      const bool   oyane  = criterion == parameters::FractureCriterion::oyane;
+      const double travel = state.tools.punch_travel();
+      const auto  &c      = m.through_thickness;
+      const std::array<std::tuple<RunSummary::Watch *,
+                                  double,
+                                  Point<dim>,
+                                  parameters::FractureMeasure,
+                                  const char *>,
+                       2>
+           measures{{{&summary.local,
+                   oyane ? m.oyane.value : m.cockcroft_latham_ratio,
+                   oyane ? m.oyane.location : m.cockcroft_latham.location,
+                      parameters::FractureMeasure::local,
+                      "its local maximum"},
+                     {&summary.through_thickness,
+                   oyane ? c.oyane.value : c.cockcroft_latham.value,
+                   oyane ? c.oyane.location : c.cockcroft_latham.location,
+                      parameters::FractureMeasure::through_thickness,
+                      "its average through the thickness"}}};
+      bool fractured = false;
+      for (const auto &[w, value, location, measure, name] : measures)
+        {
+          if (w->stroke < 0 && value >= 1)
+            {
+              // Linear in the punch travel between the two steps.
+              w->stroke = w->last_travel + (1 - w->last) / (value - w->last) *
+                                             (travel - w->last_travel);
+              std::ostringstream s;
+              for (unsigned int d = 0; d < dim; ++d)
+                s << (d ? " " : "") << location[d];
+              w->location         = s.str();
+              const bool deciding = measure == prm.material.fracture_measure;
+              pcout << (deciding ? "fracture predicted: " : "note: ")
+                    << criterion_name(criterion) << " reaches 1 by " << name
+                    << " at punch travel " << w->stroke << " mm, at "
+                    << where(location)
+                    << (deciding ? "" : " (not the deciding measure)")
+                    << std::endl;
+              if (deciding)
+                {
+                  summary.critical_stroke   = w->stroke;
+                  summary.fracture_location = w->location;
+                  fractured                 = true;
+                }
+            }
+          w->last        = value;
+          w->last_travel = travel;
+        }
+      return fractured;
     }
 
     template <int dim>
@@ -152,8 +183,18 @@ namespace formsolve
             : damage.criterion() == parameters::FractureCriterion::none
               ? "none"
               : "cockcroft-latham")
+        << "\nfracture_measure = "
+        << (prm.material.fracture_measure == parameters::FractureMeasure::local
+              ? "local"
+              : "through-thickness average")
         << "\ncritical_stroke = " << summary.critical_stroke
         << "\nfracture_location = " << summary.fracture_location
+        << "\ncritical_stroke_local = " << summary.local.stroke
+        << "\nfracture_location_local = " << summary.local.location
+        << "\ncritical_stroke_through_thickness = "
+        << summary.through_thickness.stroke
+        << "\nfracture_location_through_thickness = "
+        << summary.through_thickness.location
         << "\nforming_limit = " << sheet.forming_limit().source()
         << "\nend_reason = " << summary.end_reason << "\n";
       postprocess::write_atomically(prm.output.directory + "/run-summary.txt",
@@ -198,8 +239,6 @@ namespace formsolve
   template postprocess::FormingMeasures<dim> TimeLoop<dim>::measure_forming(); \
   template bool                              TimeLoop<dim>::check_fracture(    \
     const postprocess::FormingMeasures<dim> &,    \
-    double,                                       \
-    double,                                       \
     RunSummary &);                                \
   template void TimeLoop<dim>::write_summary(RunSummary &) const;              \
   template void TimeLoop<dim>::make_report() const;

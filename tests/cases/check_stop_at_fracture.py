@@ -1,14 +1,18 @@
 """Output/Stop at fracture: the run ends in the step in which the deciding
-criterion (Oyane) first reaches 1, before the stroke, with that reason and
+criterion (Oyane, read by Material/Fracture measure: history column COLUMN)
+first reaches 1, before the stroke, with that reason and
 that critical stroke in run-summary.txt: every earlier step's largest I is
 below 1, the last step's at or above it, and the critical stroke lies
-within the last step's travel."""
+within the last step's travel; the other measure's critical stroke is
+reported as well (-1 if not reached).
+Usage: check_stop_at_fracture.py OUT COLUMN"""
 import csv, sys
 
 out = sys.argv[1]
 rows = list(csv.DictReader(open(out + "/history.csv")))
 summary = dict(l.rstrip("\n").split(" = ", 1) for l in open(out + "/run-summary.txt") if " = " in l)
-oyane = [float(r["max_oyane"]) for r in rows]
+column = sys.argv[2]
+oyane = [float(r[column]) for r in rows]
 travel = [float(r["punch_travel"]) for r in rows]
 stroke = float(summary["critical_stroke"])
 checks = {
@@ -16,6 +20,8 @@ checks = {
     "last step at or above 1": oyane[-1] >= 1,
     "ended before the 5 mm stroke": travel[-1] < 5 - 1e-9,
     "critical stroke within the last step": travel[-2] < stroke <= travel[-1] + 1e-12,
+    "both measures' strokes reported": "critical_stroke_local" in summary
+    and "critical_stroke_through_thickness" in summary,
     "end reason": "fracture" in summary["end_reason"] and "Stop at fracture" in summary["end_reason"],
 }
 print(f"{len(rows)} steps, I {oyane[-2]:.3f} -> {oyane[-1]:.3f}, critical stroke {stroke} mm, "

@@ -22,6 +22,13 @@ namespace formsolve
       none
     };
 
+    /// Where a fracture criterion is read (doc/theory.md, section 11a).
+    enum class FractureMeasure
+    {
+      through_thickness, // the average through the thickness per column
+      local              // the largest quadrature-point value
+    };
+
     /// The flow law below the limiting strain rate (rigid zones).
     enum class RigidZone
     {
@@ -46,6 +53,7 @@ namespace formsolve
       double            oyane_b          = 0.217; // (-)
       double            cockcroft_latham = 0;     // C_crit (MPa), 0: not set
       FractureCriterion fracture         = FractureCriterion::oyane;
+      FractureMeasure   fracture_measure = FractureMeasure::through_thickness;
 
       // Forming limit curve: Keeler-Brazier from n and t0 unless a table
       // (minor, major true strains, minor increasing) is given.

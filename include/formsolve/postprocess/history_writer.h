@@ -5,6 +5,7 @@
 #include <formsolve/contact/contact_statistics.h>
 #include <formsolve/postprocess/sheet_measures.h>
 #include <formsolve/postprocess/statistics_table.h>
+#include <formsolve/postprocess/through_thickness.h>
 #include <formsolve/solver/step_solver.h>
 #include <formsolve/state/sheet_integrals.h>
 #include <formsolve/state/state.h>
@@ -19,9 +20,10 @@ namespace formsolve
     struct FormingMeasures
     {
       SheetSummary<dim>          sheet;
-      state::HistoryMaximum<dim> oyane;            // I (-)
-      state::HistoryMaximum<dim> cockcroft_latham; // integral W (MPa)
-      double cockcroft_latham_ratio = 0;           // W / C_crit, 0 unset
+      state::HistoryMaximum<dim> oyane;             // I (-)
+      state::HistoryMaximum<dim> cockcroft_latham;  // integral W (MPa)
+      double            cockcroft_latham_ratio = 0; // W / C_crit, 0 unset
+      ColumnDamage<dim> through_thickness;          // column averages
     };
 
     template <int dim>

@@ -5,6 +5,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <formsolve/model/material_frame.h>
 #include <formsolve/parameters/output.h>
@@ -36,6 +37,8 @@ namespace formsolve
       const VectorType                 *displacement = nullptr; // ghosted
       std::vector<NodalScalar>          nodal;
       const state::HistoryStorage<dim> *history = nullptr;
+      /// Cell fields by active cell index (name, values).
+      std::vector<std::pair<std::string, const dealii::Vector<float> *>> cell;
       /// With it, the orthotropy axes RD and ND as vector fields.
       const model::MaterialFrame<dim> *frame = nullptr;
     };

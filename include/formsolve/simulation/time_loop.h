@@ -16,6 +16,7 @@
 #include <formsolve/postprocess/progress.h>
 #include <formsolve/postprocess/sheet_measures.h>
 #include <formsolve/postprocess/statistics_table.h>
+#include <formsolve/postprocess/through_thickness.h>
 #include <formsolve/postprocess/vtu_writer.h>
 #include <formsolve/refinement/mesh_refinement.h>
 #include <formsolve/simulation/checkpoint.h>
@@ -62,14 +63,22 @@ namespace formsolve
       double peak_force_travel        = 0; // mm
       double max_penetration          = 0; // mm, over the run
       /// Punch travel at which the deciding fracture criterion first reached
-      /// 1 (interpolated between steps), -1 if it did not.
+      /// 1 by Material/Fracture measure (interpolated between steps), -1 if
+      /// it did not.
       double      critical_stroke = -1;
       std::string fracture_location; // "r z" or "x y z" (mm)
+      /// The same by each measure, with the running values of the loop
+      /// (kept in checkpoints).
+      struct Watch
+      {
+        double      stroke = -1;     // mm, -1: not reached
+        std::string location;        // "r z" or "x y z" (mm)
+        double      last        = 0; // value of the last step
+        double      last_travel = 0; // mm
+      };
+      Watch       local, through_thickness;
       std::string end_reason;
-      // Running values of the loop (kept in checkpoints).
-      double last_damage        = 0; // deciding damage of the last step
-      double last_damage_travel = 0; // mm
-      double wall_before        = 0; // s of wall time before a resume
+      double      wall_before = 0; // s of wall time before a resume
     };
 
     template <int dim>
@@ -127,9 +136,7 @@ namespace formsolve
       /// Whether the deciding criterion has reached 1 in this step; records
       /// the critical stroke in @p summary and says so.
       bool check_fracture(const postprocess::FormingMeasures<dim> &m,
-                          const double                             previous,
-                          const double previous_travel,
-                          RunSummary  &summary);
+                          RunSummary                              &summary);
       /// report/ by scripts/formsolve-report (rank 0; never fails the run).
       void make_report() const;
       /// The time loop's values for a checkpoint, and back (resume).
@@ -155,6 +162,7 @@ namespace formsolve
       std::unique_ptr<postprocess::VtuWriter<dim>>     writer;
       postprocess::ContactFields<dim>                  contact_fields;
       postprocess::SheetMeasures<dim>                  sheet;
+      postprocess::ThroughThicknessDamage<dim>         column_damage;
       std::unique_ptr<const Checkpoint<dim>>           checkpoint;
       std::unique_ptr<postprocess::HistoryWriter<dim>> history;
       postprocess::Progress                            progress;
