@@ -1,6 +1,8 @@
 """Predictions for the reference cup (../shared/reference/cup-drawing.md),
 axisymmetric model, blank holder at Siebel's force, mu = 0.1, Oyane's
-criterion; written into doc/forming-results.md between its markers, with
+criterion read through the thickness (Material/Fracture measure, the
+default; the local maximum's stroke is reported beside it), Hill's normal
+anisotropy (prm/materials); written into doc/forming-results.md between its markers, with
 doc/forming-results-thickness.png and doc/forming-results-ldr.png.
 
 1. The critical punch stroke of materials A, B, C with d0 = 80 mm, r_p = 2 mm
@@ -127,12 +129,14 @@ def write(pred, found):
     lines = []
     if pred:
         lines += ["### Critical strokes", "",
-                  "| case | mesh (radial x layers) | time step (s) | critical stroke (mm) | fracture at (r, z) mm | min thickness (mm) at R0 (mm) | peak punch force (kN) | end |",
-                  "|---|---|---|---|---|---|---|---|"]
+                  "| case | mesh (radial x layers) | time step (s) | critical stroke (mm), through-thickness average | fracture at (r, z) mm | critical stroke (mm), local maximum | min thickness (mm) at R0 (mm) | peak punch force (kN) | end |",
+                  "|---|---|---|---|---|---|---|---|---|"]
         for (name, m, d0, rp, ref, layers, dt), s in pred:
-            cs = float(s.get("critical_stroke", -1)) if "critical_stroke" in s else -1
+            cs = float(s.get("critical_stroke_through_thickness", -1))
+            cl = float(s.get("critical_stroke_local", -1))
             lines.append(f"| {m}, d0 = {d0}, r_p = {rp} | {2 ** (ref + 1)} x {layers} | {dt} | "
-                         f"{fmt(cs) if cs >= 0 else 'none'} | {s.get('fracture_location', '')} | "
+                         f"{fmt(cs) if cs >= 0 else 'none'} | {s.get('fracture_location_through_thickness', '')} | "
+                         f"{fmt(cl) if cl >= 0 else 'none'} | "
                          f"{fmt(s.get('min_thickness', 'nan'), 4)} at {fmt(s.get('min_thickness_R0', 'nan'))} | "
                          f"{fmt(float(s.get('peak_punch_force', 'nan')) / 1000)} | {s.get('end_reason', '')} |")
         fig, ax = plt.subplots(figsize=(8, 4.5))

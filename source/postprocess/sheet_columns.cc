@@ -114,6 +114,8 @@ namespace formsolve
             }
           s.damage = c.damage;
           s.rim    = c.rim;
+          s.top    = std::max(c.x_top[dim - 1], c.x_bottom[dim - 1]);
+          s.bottom = std::min(c.x_top[dim - 1], c.x_bottom[dim - 1]);
           s.zone   = flc.zone(s.minor, s.major, s.damage);
           cols.push_back(s);
           keys.push_back(k);

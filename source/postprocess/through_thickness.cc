@@ -36,7 +36,7 @@ namespace formsolve
       {
         unsigned int       level;
         unsigned long long path;
-        bool operator<(const Node &o) const
+        bool               operator<(const Node &o) const
         {
           return level < o.level || (level == o.level && path < o.path);
         }
@@ -50,7 +50,8 @@ namespace formsolve
       /// symmetric part) at a larger x: the same choice on any number of
       /// ranks.
       template <int dim>
-      void take_larger(ColumnMaximum<dim> &m, const double v, const Point<dim> &x)
+      void
+      take_larger(ColumnMaximum<dim> &m, const double v, const Point<dim> &x)
       {
         const double tie = 1e-9 * std::abs(m.value);
         if (v > m.value + tie ||
@@ -69,26 +70,26 @@ namespace formsolve
       template <int dim>
       std::vector<double> local_records(const state::State<dim> &state)
       {
-        constexpr double quantum = 1e-7; // mm, as SheetMeasures::key
-        const unsigned int bits = planform_bits(dim);
-        const unsigned int nc   = 1u << bits; // footprint corners
+        constexpr double           quantum = 1e-7; // mm, as SheetMeasures::key
+        const unsigned int         bits    = planform_bits(dim);
+        const unsigned int         nc      = 1u << bits; // footprint corners
         model::CellKinematics<dim> k(state.kinematics,
                                      *state.mapping,
                                      state.fe,
                                      state.history_rule,
                                      update_default,
                                      &state.reference_mapping);
-        std::vector<double> out;
+        std::vector<double>        out;
         for (const auto &cell : state.dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
             {
               // The path from the coarse cell, planform bits of each level.
-              unsigned long long path = 0, shift = 0;
+              unsigned long long                         path = 0, shift = 0;
               typename Triangulation<dim>::cell_iterator c = cell;
               while (c->level() > 0)
                 {
-                  const auto parent = c->parent();
-                  unsigned int i = 0;
+                  const auto   parent = c->parent();
+                  unsigned int i      = 0;
                   while (parent->child(i) != c)
                     ++i;
                   path |= static_cast<unsigned long long>(i & (nc - 1))
@@ -137,8 +138,8 @@ namespace formsolve
     {
       constexpr unsigned int R    = record_size<dim>();
       const unsigned int     bits = planform_bits(dim);
-      const auto all = Utilities::MPI::gather(state.comm, local_records(state),
-                                              0);
+      const auto             all =
+        Utilities::MPI::gather(state.comm, local_records(state), 0);
       ColumnDamage<dim>   result;
       std::vector<double> packed, per_cell; // broadcast from rank 0
       if (Utilities::MPI::this_mpi_process(state.comm) == 0)
@@ -162,18 +163,19 @@ namespace formsolve
                       return std::lexicographical_compare(a, a + R, b, b + R);
                     });
           for (const double *r : sorted)
-              {
-                auto &s = trees[Key(r, r + dim - 1)][node_of(r)];
-                const double h = r[dim + 1];
-                s.oyane += r[dim + 2] * h;
-                s.work += r[dim + 3] * h;
-                s.height += h;
-                for (unsigned int d = 0; d < dim; ++d)
-                  s.centre[d] += r[dim + 4 + d] * h;
-              }
-          const double t0      = state.prm.geometry.thickness;
-          const bool   deciding_cl = damage.criterion() ==
-                                      parameters::FractureCriterion::cockcroft_latham;
+            {
+              auto        &s = trees[Key(r, r + dim - 1)][node_of(r)];
+              const double h = r[dim + 1];
+              s.oyane += r[dim + 2] * h;
+              s.work += r[dim + 3] * h;
+              s.height += h;
+              for (unsigned int d = 0; d < dim; ++d)
+                s.centre[d] += r[dim + 4 + d] * h;
+            }
+          const double t0 = state.prm.geometry.thickness;
+          const bool   deciding_cl =
+            damage.criterion() ==
+            parameters::FractureCriterion::cockcroft_latham;
           // Largest deciding column average through each footprint.
           std::map<Key, std::map<Node, double>> through;
           for (auto &[key, tree] : trees)
@@ -233,10 +235,10 @@ namespace formsolve
                 per_cell.push_back(
                   through[Key(&v[i], &v[i] + dim - 1)][node_of(&v[i])]);
         }
-      packed                         = Utilities::MPI::broadcast(state.comm, packed, 0);
-      result.oyane.value             = packed[0];
-      result.cockcroft_latham.value  = packed[1];
-      result.height_error            = packed[2];
+      packed             = Utilities::MPI::broadcast(state.comm, packed, 0);
+      result.oyane.value = packed[0];
+      result.cockcroft_latham.value = packed[1];
+      result.height_error           = packed[2];
       for (unsigned int d = 0; d < dim; ++d)
         {
           result.oyane.location[d]            = packed[3 + d];
@@ -247,9 +249,12 @@ namespace formsolve
           // Every rank's slice, in the order of the gather.
           per_cell = Utilities::MPI::broadcast(state.comm, per_cell, 0);
           const auto counts = Utilities::MPI::all_gather(
-            state.comm, state.tria.n_locally_owned_active_cells());
+            state.comm,
+            state.tria.n_locally_owned_active_cells());
           std::size_t offset = 0;
-          for (unsigned int p = 0; p < Utilities::MPI::this_mpi_process(state.comm); ++p)
+          for (unsigned int p = 0;
+               p < Utilities::MPI::this_mpi_process(state.comm);
+               ++p)
             offset += counts[p];
           cells.reinit(state.tria.n_active_cells());
           for (const auto &cell : state.dof_handler.active_cell_iterators())

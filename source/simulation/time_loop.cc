@@ -411,6 +411,15 @@ namespace formsolve
       summary.wall_time = seconds();
       sheet.measure(state, damage);
       sheet.write_csv(prm.output.directory);
+      if constexpr (dim == 3)
+        if (prm.geometry.blank_shape == parameters::BlankShape::round)
+          {
+            earing = postprocess::earing_profile(
+              sheet.columns(),
+              prm.geometry.model,
+              prm.material.anisotropy.rolling_direction);
+            postprocess::write_earing(earing, prm.output.directory);
+          }
       write_summary(summary);
       pcout << "done: " << state.step << " steps, " << summary.newton_iterations
             << " Newton iterations, " << summary.cutbacks

@@ -195,8 +195,16 @@ namespace formsolve
         << summary.through_thickness.stroke
         << "\nfracture_location_through_thickness = "
         << summary.through_thickness.location
-        << "\nforming_limit = " << sheet.forming_limit().source()
-        << "\nend_reason = " << summary.end_reason << "\n";
+        << "\nforming_limit = " << sheet.forming_limit().source();
+      if (!earing.angle.empty())
+        {
+          f << "\ncup_height_mean = " << earing.mean
+            << "\nearing_amplitude = " << earing.amplitude
+            << "\nears = " << earing.ears << "\near_angles =";
+          for (const double a : earing.ear_angles)
+            f << ' ' << a;
+        }
+      f << "\nend_reason = " << summary.end_reason << "\n";
       postprocess::write_atomically(prm.output.directory + "/run-summary.txt",
                                     [&](std::ostream &o) { o << f.str(); });
     }

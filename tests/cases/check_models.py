@@ -4,8 +4,11 @@ the sheet has wrapped the punch nose. Before that the two discretisations
 differ by more (the nose bends the sheet across one or two coarse elements;
 doc/models.md). Also runs check_force_control on both.
 
-Usage: check_models.py QUARTER_OUT AXISYMMETRIC_OUT"""
-import csv, os, subprocess, sys
+With --thickness-strain TOL also the thickness strain ln(t_min/t0) of the
+last common step within TOL (absolute).
+
+Usage: check_models.py QUARTER_OUT AXISYMMETRIC_OUT [--thickness-strain TOL]"""
+import csv, math, os, subprocess, sys
 
 def forces(out):
     # A force acts on the configuration at the start of its step.
@@ -30,6 +33,16 @@ for t in common:
 print(f"worst relative difference {worst:.2e} (limit 2e-2)")
 here = os.path.dirname(os.path.abspath(__file__))
 ok = worst <= 2e-2
+if "--thickness-strain" in sys.argv:
+    tol = float(sys.argv[sys.argv.index("--thickness-strain") + 1])
+    def thickness_strain(out):
+        rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
+        last = [r for r in rows if abs(float(r["force_travel"]) - common[-1]) < 1e-6][0]
+        t0 = float(rows[0]["min_thickness"]) / (1 - float(rows[0]["max_thinning_percent"]) / 100)
+        return math.log(float(last["min_thickness"]) / t0)
+    eq, ea = thickness_strain(sys.argv[1]), thickness_strain(sys.argv[2])
+    print(f"thickness strain at {common[-1]} mm: quarter {eq:.4f}, axisymmetric {ea:.4f} (limit {tol})")
+    ok = ok and abs(eq - ea) <= tol
 for out in sys.argv[1:3]:
     ok = subprocess.call([sys.executable, os.path.join(here, "check_force_control.py"), out]) == 0 and ok
 sys.exit(0 if ok else 1)

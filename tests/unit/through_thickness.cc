@@ -5,9 +5,9 @@
 // height, X0 the reference x of the centre of the cell's coarse planform
 // cell), every column's average is t0^2/3 + t0/4 + 0.01 X0 exactly; the
 // largest and its column's heights summing to t0 are checked to 1e-12, every
-// cell's value (a float VTU field) to 1e-6. Axisymmetric and quarter models, 1 and 2 ranks. A column
-// that misses a cell of another level or rank, a wrong weight or a cell
-// counted twice fails here.
+// cell's value (a float VTU field) to 1e-6. Axisymmetric and quarter models, 1
+// and 2 ranks. A column that misses a cell of another level or rank, a wrong
+// weight or a cell counted twice fails here.
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
 
@@ -55,7 +55,7 @@ namespace
                      state.fe,
                      state.history_rule,
                      update_quadrature_points);
-    double expected_max = 0;
+    double        expected_max = 0;
     for (const auto &cell : state.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -73,22 +73,27 @@ namespace
     expected_max =
       column + 0.01 * Utilities::MPI::max(expected_max, MPI_COMM_WORLD);
 
-    const material::DamageCriteria          damage(blank.prm.material);
+    const material::DamageCriteria           damage(blank.prm.material);
     postprocess::ThroughThicknessDamage<dim> measure;
     const auto r = measure.measure(state, damage, true);
     std::cout << name << ": " << state.tria.n_global_levels() << " levels, "
               << state.tria.n_global_active_cells() << " cells\n";
-    test::close(name + ": largest column average", r.oyane.value,
-                expected_max, 1e-12);
+    test::close(name + ": largest column average",
+                r.oyane.value,
+                expected_max,
+                1e-12);
     test::close(name + ": column heights sum to t0", r.height_error, 0, 1e-12);
     double worst = 0;
     for (const auto &cell : state.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        worst = std::max(worst,
-                         std::abs(measure.cell_values()[cell->active_cell_index()] -
-                                  (column + 0.01 * coarse_x<dim>(cell))));
+        worst =
+          std::max(worst,
+                   std::abs(measure.cell_values()[cell->active_cell_index()] -
+                            (column + 0.01 * coarse_x<dim>(cell))));
     test::close(name + ": every cell's column value",
-                Utilities::MPI::max(worst, MPI_COMM_WORLD), 0, 1e-6);
+                Utilities::MPI::max(worst, MPI_COMM_WORLD),
+                0,
+                1e-6);
   }
 } // namespace
 

@@ -37,6 +37,9 @@ namespace formsolve
       double damage             = 0; // deciding criterion, column max
       material::SafetyZone zone = material::SafetyZone::safe;
       bool                 rim  = false; // on the blank's outer edge
+      // Highest and lowest current coordinate along the last axis of the
+      // column's surface nodes (mm): the cup height.
+      double top = 0, bottom = 0;
     };
 
     template <int dim>

@@ -12,6 +12,7 @@
 #include <formsolve/material/damage.h>
 #include <formsolve/material/rigid_viscoplastic.h>
 #include <formsolve/postprocess/contact_fields.h>
+#include <formsolve/postprocess/earing.h>
 #include <formsolve/postprocess/history_writer.h>
 #include <formsolve/postprocess/progress.h>
 #include <formsolve/postprocess/sheet_measures.h>
@@ -151,18 +152,19 @@ namespace formsolve
       dealii::ConditionalOStream      pcout;
       dealii::TimerOutput             timer;
 
-      material::RigidViscoplastic                      material;
-      material::DamageCriteria                         damage;
-      State<dim>                                       state;
-      state::HistoryUpdate<dim>                        history_update;
-      solver::Assembler<dim>                           assembler;
-      solver::StepSolver<dim>                          step_solver;
-      refinement::RefinementCriteria<dim>              criteria;
-      std::unique_ptr<postprocess::StatisticsTable>    refinement_log;
-      std::unique_ptr<postprocess::VtuWriter<dim>>     writer;
-      postprocess::ContactFields<dim>                  contact_fields;
-      postprocess::SheetMeasures<dim>                  sheet;
-      postprocess::ThroughThicknessDamage<dim>         column_damage;
+      material::RigidViscoplastic                   material;
+      material::DamageCriteria                      damage;
+      State<dim>                                    state;
+      state::HistoryUpdate<dim>                     history_update;
+      solver::Assembler<dim>                        assembler;
+      solver::StepSolver<dim>                       step_solver;
+      refinement::RefinementCriteria<dim>           criteria;
+      std::unique_ptr<postprocess::StatisticsTable> refinement_log;
+      std::unique_ptr<postprocess::VtuWriter<dim>>  writer;
+      postprocess::ContactFields<dim>               contact_fields;
+      postprocess::SheetMeasures<dim>               sheet;
+      postprocess::ThroughThicknessDamage<dim>      column_damage;
+      postprocess::EaringProfile earing; // 3-D round blanks, rank 0, at the end
       std::unique_ptr<const Checkpoint<dim>>           checkpoint;
       std::unique_ptr<postprocess::HistoryWriter<dim>> history;
       postprocess::Progress                            progress;
