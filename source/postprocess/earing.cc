@@ -33,10 +33,10 @@ namespace formsolve
         for (std::size_t i = 1; i < s.size(); ++i)
           if (s[i - 1].first <= theta + 1e-9 && theta <= s[i].first + 1e-9)
             {
-              const double w = s[i].first > s[i - 1].first ?
-                                 (theta - s[i - 1].first) /
-                                   (s[i].first - s[i - 1].first) :
-                                 0.;
+              const double w =
+                s[i].first > s[i - 1].first
+                  ? (theta - s[i - 1].first) / (s[i].first - s[i - 1].first)
+                  : 0.;
               return s[i - 1].second + w * (s[i].second - s[i - 1].second);
             }
         return std::nan("");
@@ -64,33 +64,49 @@ namespace formsolve
       // the rim (through its symmetry).
       std::vector<double> full;
       for (double a = 0; a < 360 - 1e-9; a += step)
-        full.push_back(
-          interpolate(rim, modelled(a + rolling_direction, m)));
+        full.push_back(interpolate(rim, modelled(a + rolling_direction, m)));
       const double lo = *std::min_element(full.begin(), full.end()),
                    hi = *std::max_element(full.begin(), full.end());
-      double       sum = 0;
+      double sum      = 0;
       for (const double h : full)
         sum += h / full.size();
       p.mean      = sum;
       p.amplitude = hi - lo;
-      // Ears: maxima of the periodic profile above the mean by a quarter of
-      // the amplitude; a rim within 0.05 mm counts as flat.
+      // Ears: maxima of the periodic profile whose prominence (the drop to
+      // the higher of the two lowest points before a higher height on
+      // either side) is at least a quarter of the amplitude, so that a
+      // wiggle on an ear's crest is not a second ear. A rim within 0.5 % of
+      // the mean height counts as flat: the quarter-disk mesh alone makes
+      // an isotropic rim wavy by 0.09 mm (0.3 %) on the earing cup.
       const std::size_t n = full.size();
-      for (std::size_t i = 0; i < n && p.amplitude >= 0.05; ++i)
-        if (full[i] >= full[(i + n - 1) % n] && full[i] > full[(i + 1) % n] &&
-            full[i] > p.mean + 0.25 * p.amplitude)
-          p.ear_angles.push_back(i * step);
+      for (std::size_t i = 0; i < n && p.amplitude >= 0.005 * p.mean; ++i)
+        {
+          if (!(full[i] >= full[(i + n - 1) % n] &&
+                full[i] > full[(i + 1) % n]))
+            continue;
+          double low[2] = {full[i], full[i]};
+          for (int side = 0; side < 2; ++side)
+            for (std::size_t k = 1; k < n; ++k)
+              {
+                const double h = full[side ? (i + k) % n : (i + n - k) % n];
+                if (h > full[i])
+                  break;
+                low[side] = std::min(low[side], h);
+              }
+          if (full[i] - std::max(low[0], low[1]) >= 0.25 * p.amplitude)
+            p.ear_angles.push_back(i * step);
+        }
       p.ears = p.ear_angles.size();
       // The profile over the modelled range, angles from RD.
-      const double range = model::symmetric_in_x(m) && model::symmetric_in_y(m) ?
-                             90. :
-                             model::symmetric_in_x(m) || model::symmetric_in_y(m) ?
-                             180. :
-                             360. - step;
+      const double range =
+        model::symmetric_in_x(m) && model::symmetric_in_y(m)   ? 90.
+        : model::symmetric_in_x(m) || model::symmetric_in_y(m) ? 180.
+                                                               : 360. - step;
       for (double a = 0; a <= range + 1e-9; a += step)
         {
           p.angle.push_back(a);
-          p.height.push_back(full[static_cast<std::size_t>(std::round(a / step)) % n]);
+          p.height.push_back(
+            full[static_cast<std::size_t>(std::round(a / step)) % n]);
         }
       return p;
     }

@@ -17,8 +17,8 @@ namespace formsolve
     {
       std::vector<double> angle;  // degrees from RD, over the model's range
       std::vector<double> height; // mm
-      double       mean = 0, amplitude = 0; // mm; amplitude = max - min
-      unsigned int ears = 0; // maxima over the full circle; 0 if flat
+      double              mean = 0, amplitude = 0; // mm; amplitude = max - min
+      unsigned int        ears = 0; // prominent maxima, full circle; 0 if flat
       std::vector<double> ear_angles; // degrees from RD, full circle
     };
 
