@@ -128,6 +128,106 @@ namespace formsolve
             }
         return out;
       }
+
+      template <int dim>
+      Node node_of(const double *r)
+      {
+        return Node{static_cast<unsigned int>(r[dim - 1]),
+                    static_cast<unsigned long long>(r[dim])};
+      }
+
+      /// Rank 0: the sums per footprint of every coarse planform cell, in an
+      /// order that does not depend on the partition (the same result on any
+      /// number of ranks).
+      template <int dim>
+      std::map<std::vector<double>, std::map<Node, Stack<dim>>>
+      footprint_sums(const std::vector<std::vector<double>> &all)
+      {
+        constexpr unsigned int      R = record_size<dim>();
+        std::vector<const double *> sorted;
+        for (const auto &v : all)
+          for (std::size_t i = 0; i < v.size(); i += R)
+            sorted.push_back(&v[i]);
+        std::sort(sorted.begin(),
+                  sorted.end(),
+                  [](const double *a, const double *b) {
+                    return std::lexicographical_compare(a, a + R, b, b + R);
+                  });
+        std::map<std::vector<double>, std::map<Node, Stack<dim>>> trees;
+        for (const double *r : sorted)
+          {
+            auto &s =
+              trees[std::vector<double>(r, r + dim - 1)][node_of<dim>(r)];
+            const double h = r[dim + 1];
+            s.oyane += r[dim + 2] * h;
+            s.work += r[dim + 3] * h;
+            s.height += h;
+            for (unsigned int d = 0; d < dim; ++d)
+              s.centre[d] += r[dim + 4 + d] * h;
+          }
+        return trees;
+      }
+
+      /// Rank 0: the maxima over the leaf columns (eq. 12a) and, in
+      /// @p through, the largest deciding column average through each
+      /// footprint.
+      template <int dim>
+      ColumnDamage<dim> column_maxima(
+        const std::map<std::vector<double>, std::map<Node, Stack<dim>>> &trees,
+        const material::DamageCriteria                                  &damage,
+        const double                                                     t0,
+        std::map<std::vector<double>, std::map<Node, double>> &through)
+      {
+        const unsigned int bits = planform_bits(dim);
+        const bool         deciding_cl =
+          damage.criterion() == parameters::FractureCriterion::cockcroft_latham;
+        ColumnDamage<dim> result;
+        for (const auto &[key, tree] : trees)
+          {
+            std::map<Node, bool> inner;
+            for (const auto &[n, s] : tree)
+              for (Node a = n; a.level > 0;)
+                {
+                  a        = a.parent(bits);
+                  inner[a] = true;
+                }
+            for (const auto &[leaf, s] : tree)
+              {
+                if (inner.count(leaf))
+                  continue;
+                Stack<dim> column = s;
+                for (Node a = leaf; a.level > 0;)
+                  {
+                    a = a.parent(bits);
+                    if (const auto p = tree.find(a); p != tree.end())
+                      {
+                        column.oyane += p->second.oyane;
+                        column.work += p->second.work;
+                        column.height += p->second.height;
+                        column.centre += p->second.centre;
+                      }
+                  }
+                result.height_error =
+                  std::max(result.height_error,
+                           std::abs(column.height / t0 - 1));
+                const double oyane = column.oyane / column.height;
+                const double cl =
+                  damage.cockcroft_latham(column.work / column.height);
+                const Point<dim> x = column.centre / column.height;
+                take_larger(result.oyane, oyane, x);
+                take_larger(result.cockcroft_latham, cl, x);
+                const double decide = deciding_cl ? cl : oyane;
+                for (Node a = leaf;; a = a.parent(bits))
+                  {
+                    double &m = through[key][a];
+                    m         = std::max(m, decide);
+                    if (a.level == 0)
+                      break;
+                  }
+              }
+          }
+        return result;
+      }
     } // namespace
 
     template <int dim>
@@ -136,92 +236,18 @@ namespace formsolve
                                          const material::DamageCriteria &damage,
                                          const bool cell_values)
     {
-      constexpr unsigned int R    = record_size<dim>();
-      const unsigned int     bits = planform_bits(dim);
+      constexpr unsigned int R = record_size<dim>();
       const auto             all =
         Utilities::MPI::gather(state.comm, local_records(state), 0);
       ColumnDamage<dim>   result;
       std::vector<double> packed, per_cell; // broadcast from rank 0
       if (Utilities::MPI::this_mpi_process(state.comm) == 0)
         {
-          using Key = std::vector<double>;
-          // Sums per footprint of every coarse planform cell.
-          std::map<Key, std::map<Node, Stack<dim>>> trees;
-          auto node_of = [&](const double *r) {
-            return Node{static_cast<unsigned int>(r[dim - 1]),
-                        static_cast<unsigned long long>(r[dim])};
-          };
-          // Summed in an order that does not depend on the partition, so
-          // that the result is the same on any number of ranks.
-          std::vector<const double *> sorted;
-          for (const auto &v : all)
-            for (std::size_t i = 0; i < v.size(); i += R)
-              sorted.push_back(&v[i]);
-          std::sort(sorted.begin(),
-                    sorted.end(),
-                    [](const double *a, const double *b) {
-                      return std::lexicographical_compare(a, a + R, b, b + R);
-                    });
-          for (const double *r : sorted)
-            {
-              auto        &s = trees[Key(r, r + dim - 1)][node_of(r)];
-              const double h = r[dim + 1];
-              s.oyane += r[dim + 2] * h;
-              s.work += r[dim + 3] * h;
-              s.height += h;
-              for (unsigned int d = 0; d < dim; ++d)
-                s.centre[d] += r[dim + 4 + d] * h;
-            }
-          const double t0 = state.prm.geometry.thickness;
-          const bool   deciding_cl =
-            damage.criterion() ==
-            parameters::FractureCriterion::cockcroft_latham;
-          // Largest deciding column average through each footprint.
-          std::map<Key, std::map<Node, double>> through;
-          for (auto &[key, tree] : trees)
-            {
-              std::map<Node, bool> inner;
-              for (const auto &[n, s] : tree)
-                for (Node a = n; a.level > 0;)
-                  {
-                    a        = a.parent(bits);
-                    inner[a] = true;
-                  }
-              for (const auto &[leaf, s] : tree)
-                {
-                  if (inner.count(leaf))
-                    continue;
-                  Stack<dim> column = s;
-                  for (Node a = leaf; a.level > 0;)
-                    {
-                      a = a.parent(bits);
-                      if (const auto p = tree.find(a); p != tree.end())
-                        {
-                          column.oyane += p->second.oyane;
-                          column.work += p->second.work;
-                          column.height += p->second.height;
-                          column.centre += p->second.centre;
-                        }
-                    }
-                  result.height_error =
-                    std::max(result.height_error,
-                             std::abs(column.height / t0 - 1));
-                  const double oyane = column.oyane / column.height;
-                  const double cl =
-                    damage.cockcroft_latham(column.work / column.height);
-                  const Point<dim> x = column.centre / column.height;
-                  take_larger(result.oyane, oyane, x);
-                  take_larger(result.cockcroft_latham, cl, x);
-                  const double decide = deciding_cl ? cl : oyane;
-                  for (Node a = leaf;; a = a.parent(bits))
-                    {
-                      double &m = through[key][a];
-                      m         = std::max(m, decide);
-                      if (a.level == 0)
-                        break;
-                    }
-                }
-            }
+          std::map<std::vector<double>, std::map<Node, double>> through;
+          result = column_maxima<dim>(footprint_sums<dim>(all),
+                                      damage,
+                                      state.prm.geometry.thickness,
+                                      through);
           packed = {result.oyane.value,
                     result.cockcroft_latham.value,
                     result.height_error};
@@ -233,7 +259,8 @@ namespace formsolve
             for (const auto &v : all)
               for (std::size_t i = 0; i < v.size(); i += R)
                 per_cell.push_back(
-                  through[Key(&v[i], &v[i] + dim - 1)][node_of(&v[i])]);
+                  through[std::vector<double>(&v[i], &v[i] + dim - 1)]
+                         [node_of<dim>(&v[i])]);
         }
       packed             = Utilities::MPI::broadcast(state.comm, packed, 0);
       result.oyane.value = packed[0];

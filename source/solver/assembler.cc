@@ -46,6 +46,46 @@ namespace formsolve
         else
           constraints.distribute_local_to_global(r, dofs, residual);
       }
+      /// One point's deviatoric residual and (with @p form 1: the product
+      /// form, 2: the general one; 0: none) its tangent; @p map: Hill's map
+      /// at the point, or nullptr.
+      template <int dim>
+      void add_point(const material::RigidViscoplastic &material,
+                     const material::PointResponse     &m,
+                     const SymmetricTensor<2, 3>       &w_rate,
+                     const bool                         dual,
+                     const material::Mandel6x6         *map,
+                     const unsigned int                 q,
+                     const double                       dV,
+                     const std::vector<ShapeStrain>    &B,
+                     const unsigned int                 form,
+                     CellTangent<dim>                  &tangent,
+                     Vector<double>                    &r,
+                     std::vector<double>               &s,
+                     std::vector<double>               &u)
+      {
+        // d s'/dD = 2 mu P_dev + beta D' (x) D'  (doc/theory.md, eq. 4,
+        // 4b): s = B : D', u = beta_h/2 s + beta_p t with t = B : w.
+        const double mu     = m.viscosity * dV;
+        const double beta_h = (m.beta - m.beta_plastic) * dV;
+        const double beta_p = 0.5 * m.beta_plastic * dV;
+        for (unsigned int i = 0; i < B.size(); ++i)
+          {
+            r[i] += B[i].contract(m.deviatoric_stress) * dV;
+            if (form == 1)
+              {
+                s[i] = B[i].contract(m.strain_rate_deviator);
+                u[i] = 0.5 * beta_h * s[i] +
+                       beta_p * (dual ? B[i].contract(w_rate) : s[i]);
+              }
+          }
+        if (form == 1)
+          tangent.add_deviatoric(q, B, mu, s, u);
+        else if (form == 2 && map)
+          tangent.add_general(q, B, material.tangent(m, w_rate, *map), dV);
+        else if (form == 2)
+          tangent.add_general(q, B, material.tangent(m, w_rate) * dV);
+      }
     } // namespace
 
     template <int dim>
@@ -142,33 +182,19 @@ namespace formsolve
                                        material.cutoff_rate(),
                                        material.smooth_rigid_zone()) *
                            m.dual_rate;
-                // d s'/dD = 2 mu P_dev + beta D' (x) D'  (doc/theory.md,
-                // eq. 4, 4b): s = B : D', u = beta_h/2 s + beta_p t with
-                // t = B : w.
-                const double mu     = m.viscosity * dV;
-                const double beta_h = (m.beta - m.beta_plastic) * dV;
-                const double beta_p = 0.5 * m.beta_plastic * dV;
-                for (unsigned int i = 0; i < n; ++i)
-                  {
-                    r[i] += B[i].contract(m.deviatoric_stress) * dV;
-                    if (matrix)
-                      {
-                        s[i] = B[i].contract(m.strain_rate_deviator);
-                        u[i] = 0.5 * beta_h * s[i] +
-                               beta_p * (dual ? B[i].contract(w_rate) : s[i]);
-                      }
-                  }
-                if (matrix && product_form)
-                  tangent.add_deviatoric(q, B, mu, s, u);
-                else if (matrix && hill)
-                  tangent.add_general(q,
-                                      B,
-                                      material.tangent(m,
-                                                       w_rate,
-                                                       orientation.map(q)),
-                                      dV);
-                else if (matrix)
-                  tangent.add_general(q, B, material.tangent(m, w_rate) * dV);
+                add_point(material,
+                          m,
+                          w_rate,
+                          dual != nullptr,
+                          hill ? &orientation.map(q) : nullptr,
+                          q,
+                          dV,
+                          B,
+                          matrix ? (product_form ? 1 : 2) : 0,
+                          tangent,
+                          r,
+                          s,
+                          u);
               }
             // Incompressibility by penalty, reduced integration against
             // locking.
