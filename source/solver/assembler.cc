@@ -164,12 +164,11 @@ namespace formsolve
             for (unsigned int q = 0; q < kf.n_points(); ++q)
               {
                 const auto m =
-                  hill ? material.evaluate(D[q],
-                                           h[q]->strain,
-                                           dt,
-                                           newton,
-                                           orientation.map(q))
-                       : material.evaluate(D[q], h[q]->strain, dt, newton);
+                  material.evaluate(D[q],
+                                    h[q]->strain,
+                                    dt,
+                                    newton,
+                                    hill ? &orientation.map(q) : nullptr);
                 const double dV = kf.dV(q);
                 kf.shape_strains(q, B);
                 // Stress-velocity linearisation: (4/9) s/rate^3 D'(x)D' becomes

@@ -76,12 +76,11 @@ namespace formsolve
             for (unsigned int q = 0; q < kf.n_points(); ++q)
               {
                 const auto r =
-                  hill ? material.evaluate(D[q],
-                                           h[q]->strain,
-                                           dt,
-                                           false,
-                                           orientation.map(q))
-                       : material.evaluate(D[q], h[q]->strain, dt, false);
+                  material.evaluate(D[q],
+                                    h[q]->strain,
+                                    dt,
+                                    false,
+                                    hill ? &orientation.map(q) : nullptr);
                 if (damage)
                   {
                     const auto d = damage->increment(

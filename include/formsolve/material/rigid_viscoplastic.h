@@ -63,6 +63,17 @@ namespace formsolve
                              const bool                   newton,
                              const Mandel6x6             &map) const;
 
+      /// Either: Hill's with @p map, von Mises's without (nullptr).
+      PointResponse evaluate(const SymmetricTensor<2, 3> &strain_rate,
+                             const double                 strain_old,
+                             const double                 dt,
+                             const bool                   newton,
+                             const Mandel6x6             *map) const
+      {
+        return map ? evaluate(strain_rate, strain_old, dt, newton, *map)
+                   : evaluate(strain_rate, strain_old, dt, newton);
+      }
+
       /// M = T(R) S: Hill's root metric S (Hill48::root()) in the orthotropy
       /// frame @p frame (columns RD, TD, ND now), with T the rotation of
       /// symmetric tensors by it: the mapped rate is M^T D, the stress
