@@ -31,6 +31,7 @@ namespace formsolve
         , b(p.oyane_b / (k * k))
         , critical(p.cockcroft_latham / k)
         , which(p.fracture)
+        , mean(p.mean_stress)
     {}
 
     DamageIncrement DamageCriteria::increment(const SymmetricTensor<2, 3> &s,

@@ -23,6 +23,9 @@ namespace formsolve
       const Choice<FractureMeasure> measure_names{
         {"through-thickness average", FractureMeasure::through_thickness},
         {"local", FractureMeasure::local}};
+      const Choice<MeanStress> mean_stress_names{
+        {"cell pressure", MeanStress::cell_pressure},
+        {"projected", MeanStress::projected}};
     } // namespace
 
     namespace
@@ -61,6 +64,74 @@ namespace formsolve
                 "Material/Forming limit table",
                 "needs at least two points");
         return points;
+      }
+    } // namespace
+
+    namespace
+    {
+      /// The entries of the fracture criteria and the forming limit.
+      void declare_fracture(ParameterHandler &prm)
+      {
+        prm.declare_entry(
+          "Oyane a",
+          "0.020",
+          Double(),
+          "a in Oyane's ductile-fracture integral I = (1/b) int (sigma_m / "
+          "sigma_bar + a) d eps_bar (-); fracture where I reaches 1. Default: "
+          "material B of the reference scene.");
+        prm.declare_entry("Oyane b",
+                          "0.217",
+                          Double(),
+                          "b in Oyane's integral (-), > 0.");
+        prm.declare_entry(
+          "Cockcroft-Latham critical value",
+          "0",
+          Double(0),
+          "C_crit (MPa) of the Cockcroft-Latham criterion C = int max(sigma_1, "
+          "0) d eps_bar / C_crit; 0: not set (the integral itself is still "
+          "written to the VTU files, so that C_crit can be calibrated).");
+        prm.declare_entry(
+          "Fracture criterion",
+          "oyane",
+          Selection(fracture_names.pattern()),
+          "The criterion that decides fracture: the punch travel at which it "
+          "first reaches 1 anywhere is the critical stroke.");
+        prm.declare_entry(
+          "Fracture measure",
+          "through-thickness average",
+          Selection(measure_names.pattern()),
+          "Where the criterion is read for the critical stroke. through-"
+          "thickness average: the average through the thickness over each "
+          "column of elements, as Oyane's constants are calibrated (from "
+          "section-averaged fracture strains of tensile tests; a bent sheet's "
+          "surface fibre carries bending strain no tensile test saw). local: "
+          "the largest value at any point. Both are computed and reported "
+          "every step (history.csv, run-summary.txt).");
+        prm.declare_entry(
+          "Fracture mean stress",
+          "cell pressure",
+          Selection(mean_stress_names.pattern()),
+          "The mean stress sigma_m in Oyane's and Cockcroft-Latham's "
+          "integrals. cell pressure: the penalty pressure of the element "
+          "(constant per element, as the solver sees it; exact per layer in "
+          "bending, where sigma_m jumps at the neutral axis). projected: the "
+          "cell pressures averaged onto the nodes (lumped L2 projection) and "
+          "interpolated, smooth across elements but smeared over the layer "
+          "next to a jump (doc/theory.md, section 11b).");
+        prm.declare_entry(
+          "Forming limit table",
+          "",
+          Anything(),
+          "The forming limit curve as 'minor:major, minor:major, ...' (true "
+          "strains, minor increasing, at least two points; linear in between, "
+          "constant beyond the ends). Empty: Keeler-Brazier from the hardening "
+          "exponent and the sheet thickness (doc/theory.md, section 11).");
+        prm.declare_entry(
+          "Safety margin",
+          "0.1",
+          Double(0, 1),
+          "Forming limit diagram: a point is marginal when its major strain "
+          "exceeds (1 - this) times the limit at its minor strain (-).");
       }
     } // namespace
 
@@ -117,55 +188,7 @@ namespace formsolve
                         "alpha (-): the mean stress is sigma_m = alpha K/rate0 "
                         "tr(strain rate), integrated with reduced quadrature.");
       Anisotropy::declare(prm);
-      prm.declare_entry(
-        "Oyane a",
-        "0.020",
-        Double(),
-        "a in Oyane's ductile-fracture integral I = (1/b) int (sigma_m / "
-        "sigma_bar + a) d eps_bar (-); fracture where I reaches 1. Default: "
-        "material B of the reference scene.");
-      prm.declare_entry("Oyane b",
-                        "0.217",
-                        Double(),
-                        "b in Oyane's integral (-), > 0.");
-      prm.declare_entry(
-        "Cockcroft-Latham critical value",
-        "0",
-        Double(0),
-        "C_crit (MPa) of the Cockcroft-Latham criterion C = int max(sigma_1, "
-        "0) d eps_bar / C_crit; 0: not set (the integral itself is still "
-        "written to the VTU files, so that C_crit can be calibrated).");
-      prm.declare_entry(
-        "Fracture criterion",
-        "oyane",
-        Selection(fracture_names.pattern()),
-        "The criterion that decides fracture: the punch travel at which it "
-        "first reaches 1 anywhere is the critical stroke.");
-      prm.declare_entry(
-        "Fracture measure",
-        "through-thickness average",
-        Selection(measure_names.pattern()),
-        "Where the criterion is read for the critical stroke. through-"
-        "thickness average: the average through the thickness over each "
-        "column of elements, as Oyane's constants are calibrated (from "
-        "section-averaged fracture strains of tensile tests; a bent sheet's "
-        "surface fibre carries bending strain no tensile test saw). local: "
-        "the largest value at any point. Both are computed and reported "
-        "every step (history.csv, run-summary.txt).");
-      prm.declare_entry(
-        "Forming limit table",
-        "",
-        Anything(),
-        "The forming limit curve as 'minor:major, minor:major, ...' (true "
-        "strains, minor increasing, at least two points; linear in between, "
-        "constant beyond the ends). Empty: Keeler-Brazier from the hardening "
-        "exponent and the sheet thickness (doc/theory.md, section 11).");
-      prm.declare_entry(
-        "Safety margin",
-        "0.1",
-        Double(0, 1),
-        "Forming limit diagram: a point is marginal when its major strain "
-        "exceeds (1 - this) times the limit at its minor strain (-).");
+      declare_fracture(prm);
       prm.leave_subsection();
     }
 
@@ -181,11 +204,12 @@ namespace formsolve
       rigid_zone            = rigid_zone_names.parse(prm.get("Rigid zone"));
       volumetric_penalty    = prm.get_double("Volumetric penalty");
       anisotropy.parse(prm);
-      oyane_a             = prm.get_double("Oyane a");
-      oyane_b             = prm.get_double("Oyane b");
-      cockcroft_latham    = prm.get_double("Cockcroft-Latham critical value");
-      fracture            = fracture_names.parse(prm.get("Fracture criterion"));
-      fracture_measure    = measure_names.parse(prm.get("Fracture measure"));
+      oyane_a          = prm.get_double("Oyane a");
+      oyane_b          = prm.get_double("Oyane b");
+      cockcroft_latham = prm.get_double("Cockcroft-Latham critical value");
+      fracture         = fracture_names.parse(prm.get("Fracture criterion"));
+      fracture_measure = measure_names.parse(prm.get("Fracture measure"));
+      mean_stress = mean_stress_names.parse(prm.get("Fracture mean stress"));
       forming_limit_table = parse_table(prm.get("Forming limit table"));
       safety_margin       = prm.get_double("Safety margin");
       prm.leave_subsection();

@@ -2,6 +2,7 @@
 #include <formsolve/model/cell_kinematics.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/state/history_update.h>
+#include <formsolve/state/projected_mean_stress.h>
 #include <formsolve/state/volumetric_rate.h>
 
 #include <algorithm>
@@ -28,6 +29,30 @@ namespace formsolve
         , reduced(degree)
     {}
 
+    namespace
+    {
+      /// The element's penalty pressure sigma_m = K_v mean(div v) (MPa) at
+      /// the reduced points of @p kr (reinitialised).
+      template <int dim>
+      double cell_pressure(const CellKinematics<dim>          &kr,
+                           const VectorType                   &v,
+                           const double                        dt,
+                           const double                        offset,
+                           const double                        Kv,
+                           std::vector<SymmetricTensor<2, 3>> &Dr,
+                           std::vector<double>                &div_v)
+      {
+        volumetric_rates(kr, v, dt, offset, Dr, div_v);
+        double mean_div = 0, volume = 0;
+        for (unsigned int q = 0; q < kr.n_points(); ++q)
+          {
+            mean_div += div_v[q] * kr.dV(q);
+            volume += kr.dV(q);
+          }
+        return Kv * mean_div / volume;
+      }
+    } // namespace
+
     template <int dim>
     void HistoryUpdate<dim>::advance(const DoFHandler<dim> &dof_handler,
                                      const Mapping<dim>    &mapping,
@@ -35,13 +60,16 @@ namespace formsolve
                                      const double           dt,
                                      HistoryStorage<dim>   &history) const
     {
-      const auto                        &fe   = dof_handler.get_fe();
-      const bool                         hill = !material.isotropic();
+      const auto &fe   = dof_handler.get_fe();
+      const bool  hill = !material.isotropic();
+      const bool  projected =
+        damage && damage->mean_stress() == parameters::MeanStress::projected;
       CellKinematics<dim>                kf(kinematics,
                              mapping,
                              fe,
                              full,
-                             update_jacobians,
+                             update_jacobians |
+                               (projected ? update_values : update_default),
                              hill ? &reference_mapping : nullptr);
       material::HillOrientation<dim>     orientation(material);
       CellKinematics<dim>                kr(kinematics,
@@ -51,9 +79,28 @@ namespace formsolve
                              update_default,
                              &reference_mapping);
       std::vector<SymmetricTensor<2, 3>> D, Dr;
-      std::vector<double>                div_v;
-      const double                       Kv   = material.bulk_viscosity();
-      const auto                        &flow = material.flow_stress();
+      std::vector<double>                div_v, cell_means, point_means;
+      const double                       Kv = material.bulk_viscosity();
+      ProjectedMeanStress<dim>           projection;
+      if (projected)
+        {
+          cell_means.assign(dof_handler.get_triangulation().n_active_cells(),
+                            0.);
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
+              {
+                kr.reinit(cell);
+                cell_means[cell->active_cell_index()] =
+                  cell_pressure(kr,
+                                v,
+                                dt,
+                                history.get_data(cell)[0]->volume_offset,
+                                Kv,
+                                Dr,
+                                div_v);
+              }
+          projection.project(dof_handler, kf, cell_means, v);
+        }
 
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -64,45 +111,50 @@ namespace formsolve
             if (hill)
               orientation.reinit(kf);
             auto h = history.get_data(cell);
-            volumetric_rates(kr, v, dt, h[0]->volume_offset, Dr, div_v);
-            double mean_div = 0, volume = 0;
-            for (unsigned int q = 0; q < kr.n_points(); ++q)
-              {
-                mean_div += div_v[q] * kr.dV(q);
-                volume += kr.dV(q);
-              }
-            const double mean_stress = Kv * mean_div / volume;
-
+            point_means.assign(
+              kf.n_points(),
+              cell_pressure(kr, v, dt, h[0]->volume_offset, Kv, Dr, div_v));
+            if (projected)
+              projection.values(kf.fe_values(), point_means);
             for (unsigned int q = 0; q < kf.n_points(); ++q)
-              {
-                const auto r =
-                  material.evaluate(D[q],
-                                    h[q]->strain,
-                                    dt,
-                                    false,
-                                    hill ? &orientation.map(q) : nullptr);
-                if (damage)
-                  {
-                    const auto d = damage->increment(
-                      r.deviatoric_stress,
-                      mean_stress,
-                      material::RigidViscoplastic::equivalent_stress(r),
-                      dt * r.equivalent_strain_rate);
-                    h[q]->oyane += d.oyane;
-                    h[q]->cockcroft_latham += d.cockcroft_latham;
-                  }
-                h[q]->strain += dt * r.equivalent_strain_rate;
-                h[q]->strain_rate = r.equivalent_strain_rate;
-                h[q]->flow_stress =
-                  flow.value(h[q]->strain,
-                             std::max(r.equivalent_strain_rate, 1e-300));
-                h[q]->mean_stress = mean_stress;
-                // Through-thickness direction: the mapped last reference axis
-                // (the layer direction of the sheet mesh).
-                const Tensor<1, 3> t = kf.mapped_axis(q, dim - 1);
-                h[q]->thickness_strain += dt * (t * (D[q] * t));
-              }
+              update_point(kf.mapped_axis(q, dim - 1),
+                           D[q],
+                           point_means[q],
+                           hill ? &orientation.map(q) : nullptr,
+                           dt,
+                           *h[q]);
           }
+    }
+
+    template <int dim>
+    void HistoryUpdate<dim>::update_point(const Tensor<1, 3>          &normal,
+                                          const SymmetricTensor<2, 3> &D,
+                                          const double mean_stress,
+                                          const material::Mandel6x6 *map,
+                                          const double               dt,
+                                          QuadraturePointHistory    &h) const
+    {
+      const auto r = material.evaluate(D, h.strain, dt, false, map);
+      if (damage)
+        {
+          const auto d =
+            damage->increment(r.deviatoric_stress,
+                              mean_stress,
+                              material::RigidViscoplastic::equivalent_stress(r),
+                              dt * r.equivalent_strain_rate);
+          h.oyane += d.oyane;
+          h.cockcroft_latham += d.cockcroft_latham;
+        }
+      h.strain += dt * r.equivalent_strain_rate;
+      h.strain_rate = r.equivalent_strain_rate;
+      h.flow_stress =
+        material.flow_stress().value(h.strain,
+                                     std::max(r.equivalent_strain_rate,
+                                              1e-300));
+      h.mean_stress = mean_stress;
+      // Through-thickness direction: the mapped last reference axis (the
+      // layer direction of the sheet mesh), @p normal.
+      h.thickness_strain += dt * (normal * (D * normal));
     }
 
     template <int dim>

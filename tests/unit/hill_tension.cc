@@ -110,7 +110,7 @@ namespace
       residual.reinit(state.owned, state.comm);
     }
 
-    void solve()
+    void solve_flow()
     {
       bc.distribute(state.velocity);
       parameters::NonlinearSolver p;
@@ -226,7 +226,7 @@ namespace
                                          &damage);
     state.create_mesh();
     Tension tension(state, assembler, plane);
-    tension.solve();
+    tension.solve_flow();
     const double force = tension.end_force();
 
     // Rate and flow stress at the first point of a cell of this rank.

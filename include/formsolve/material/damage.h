@@ -50,10 +50,14 @@ namespace formsolve
       double deciding(const double oyane, const double integral) const;
 
       parameters::FractureCriterion criterion() const { return which; }
+      /// Where increment()'s mean stress comes from (Material/Fracture mean
+      /// stress).
+      parameters::MeanStress mean_stress() const { return mean; }
 
     private:
       double                        k, a, b, critical;
       parameters::FractureCriterion which;
+      parameters::MeanStress        mean;
     };
   } // namespace material
 } // namespace formsolve

@@ -29,6 +29,13 @@ namespace formsolve
       local              // the largest quadrature-point value
     };
 
+    /// The mean stress in the fracture integrals (doc/theory.md, 11b).
+    enum class MeanStress
+    {
+      cell_pressure, // the element's penalty pressure
+      projected      // nodal averages of it, interpolated
+    };
+
     /// The flow law below the limiting strain rate (rigid zones).
     enum class RigidZone
     {
@@ -54,6 +61,7 @@ namespace formsolve
       double            cockcroft_latham = 0;     // C_crit (MPa), 0: not set
       FractureCriterion fracture         = FractureCriterion::oyane;
       FractureMeasure   fracture_measure = FractureMeasure::through_thickness;
+      MeanStress        mean_stress      = MeanStress::cell_pressure;
 
       // Forming limit curve: Keeler-Brazier from n and t0 unless a table
       // (minor, major true strains, minor increasing) is given.

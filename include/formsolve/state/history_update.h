@@ -53,6 +53,15 @@ namespace formsolve
                                    HistoryStorage<dim> &history) const;
 
     private:
+      /// One material point after a step of @p dt at rate @p D, with the
+      /// mean stress @p mean_stress (MPa) and the sheet normal @p normal.
+      void update_point(const dealii::Tensor<1, 3>          &normal,
+                        const dealii::SymmetricTensor<2, 3> &D,
+                        const double                         mean_stress,
+                        const material::Mandel6x6           *map,
+                        const double                         dt,
+                        QuadraturePointHistory              &h) const;
+
       const material::RigidViscoplastic &material;
       const model::Kinematics<dim>      &kinematics;
       const dealii::Mapping<dim>        &reference_mapping;
