@@ -29,15 +29,16 @@ MESHES = [("64 x 4", 5, 4), ("128 x 4", 6, 4), ("256 x 4", 7, 4), ("128 x 8", 6,
 STEPS = [0.25, 0.125, 0.0625]
 
 
-def siebel(d0, t0, rm, dp=40.0):
-    """Blank-holder force (N): p = 0.0025 [(beta - 1)^2 + d_p/(200 t0)] R_m on
+def siebel(d0, t0, rm, dp=40.0, c=0.0025):
+    """Blank-holder force (N): p = c [(beta - 1)^2 + d_p/(200 t0)] R_m on
     the initial flange under the holder, pi/4 (d0^2 - 58.5^2)."""
-    p = 0.0025 * ((d0 / dp - 1) ** 2 + dp / (200 * t0)) * rm
+    p = c * ((d0 / dp - 1) ** 2 + dp / (200 * t0)) * rm
     return p * math.pi / 4 * (d0 ** 2 - 58.5 ** 2)
 
 
-def run(name, material, d0, rp, refinements=5, layers=4, dt=0.25, force=False):
-    """One axisymmetric draw, stopped at fracture or at draw-through."""
+def run(name, material, d0, rp, refinements=5, layers=4, dt=0.25, force=False, extra=None, c=0.0025):
+    """One axisymmetric draw, stopped at fracture or at draw-through; extra:
+    further --set entries (path: value), c: Siebel's constant."""
     out = os.path.join(OUT, name)
     summary = os.path.join(out, "run-summary.txt")
     if force or not os.path.exists(summary):
@@ -47,11 +48,11 @@ def run(name, material, d0, rp, refinements=5, layers=4, dt=0.25, force=False):
         with open(prm, "w") as f:
             f.write(f"include {ROOT}/prm/cup-drawing.prm\ninclude {ROOT}/prm/materials/{material}.prm\n")
         sets = {"Geometry/Blank diameter": d0, "Tools/Punch/Profile radius": rp,
-                "Tools/Blank holder/Force": round(siebel(d0, t0, rm)), "Tools/Punch/Stroke": 60,
+                "Tools/Blank holder/Force": round(siebel(d0, t0, rm, c=c)), "Tools/Punch/Stroke": 60,
                 "Mesh/Planform refinements": refinements, "Mesh/Layers through thickness": layers,
                 "Time stepping/Time step": dt, "Output/Stop at fracture": "true",
                 "Output/Output interval": 0, "Output/Report": "false", "Output/Revolved copy": "false",
-                "Output/Output directory": out}
+                "Output/Output directory": out, **(extra or {})}
         cmd = [EXE, prm] + sum((["--set", f"{k}={v}"] for k, v in sets.items()), [])
         with open(os.path.join(out, "log.txt"), "w") as log:
             code = subprocess.call(cmd, stdout=log, stderr=subprocess.STDOUT)
