@@ -7,6 +7,7 @@
 #include <formsolve/parameters/command_line.h>
 #include <formsolve/parameters/manual.h>
 #include <formsolve/parameters/parameters.h>
+#include <formsolve/parameters/plausibility.h>
 #include <formsolve/simulation/time_loop.h>
 
 #include <iostream>
@@ -81,6 +82,22 @@ int main(int argc, char **argv)
       formsolve::parameters::Run parameters;
       parameters.parse(prm);
       parameters.validate();
+      if (root)
+        {
+          if (parameters.tools.holder_force_by_siebel)
+            {
+              const auto s = formsolve::parameters::siebel(parameters);
+              std::cout << "blank-holder force by Siebel's rule: " << s.force
+                        << " N (p = " << s.pressure << " MPa on " << s.area
+                        << " mm^2, R_m = "
+                        << formsolve::parameters::tensile_strength(
+                             parameters.material)
+                        << " MPa)\n";
+            }
+          for (const auto &w :
+               formsolve::parameters::plausibility_warnings(parameters))
+            std::cout << "warning: " << w << "\n";
+        }
       return formsolve::model::space_dimension(parameters.geometry.model) == 2
                ? run<2>(parameters, prm, cl)
                : run<3>(parameters, prm, cl);

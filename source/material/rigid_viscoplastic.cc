@@ -16,7 +16,7 @@ namespace formsolve
         , rolling(p.anisotropy.rolling_direction * M_PI / 180)
         , cutoff(p.limiting_strain_rate)
         , smooth(p.rigid_zone == parameters::RigidZone::smooth)
-        , bulk(p.volumetric_penalty * p.strength_coefficient /
+        , bulk(p.volumetric_penalty * p.stress_scale() /
                p.reference_strain_rate)
     {}
 

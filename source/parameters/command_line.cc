@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <formsolve/parameters/command_line.h>
+#include <formsolve/parameters/input_check.h>
 
 #include <filesystem>
 #include <fstream>
@@ -95,8 +96,12 @@ namespace formsolve
 
     namespace
     {
-      std::string expand_includes(const std::filesystem::path &file,
-                                  const unsigned int           depth)
+      /// The lines of @p file with its 'include' lines replaced by the
+      /// included files' lines (resolved against the including file), each
+      /// with its origin.
+      void expand_includes(const std::filesystem::path &file,
+                           const unsigned int           depth,
+                           std::vector<SourceLine>     &lines)
       {
         std::ifstream in(file);
         AssertThrow(in.good(),
@@ -104,10 +109,11 @@ namespace formsolve
         AssertThrow(depth < 16,
                     ExcMessage("include nesting deeper than 16 at " +
                                file.string()));
-        std::ostringstream out;
-        std::string        line;
+        std::string  line;
+        unsigned int number = 0;
         while (std::getline(in, line))
           {
+            ++number;
             const auto first = line.find_first_not_of(" \t");
             if (first != std::string::npos &&
                 (line.compare(first, 8, "include ") == 0 ||
@@ -119,12 +125,11 @@ namespace formsolve
                 std::filesystem::path inc(name);
                 if (inc.is_relative())
                   inc = file.parent_path() / inc;
-                out << expand_includes(inc, depth + 1);
+                expand_includes(inc, depth + 1, lines);
               }
             else
-              out << line << '\n';
+              lines.push_back({file.filename().string(), number, line});
           }
-        return out.str();
       }
     } // namespace
 
@@ -139,10 +144,15 @@ namespace formsolve
       // them, at any depth (deal.II resolves them against the working
       // directory): expand them here. Other paths (mesh, output) stay
       // relative to the working directory.
+      std::vector<SourceLine> lines;
+      expand_includes(std::filesystem::absolute(cl.input_file), 0, lines);
+      const DeclaredSection tree = declared(prm);
+      check_input(tree, lines);
       std::string text;
+      for (const auto &l : lines)
+        text += l.text + '\n';
       try
         {
-          text = expand_includes(std::filesystem::absolute(cl.input_file), 0);
           prm.parse_input_from_string(text,
                                       cl.input_file,
                                       /*skip_undefined=*/false);
@@ -166,6 +176,7 @@ namespace formsolve
               start = slash + 1;
             }
           const std::string entry = path.substr(start);
+          check_override(tree, path, value);
           try
             {
               for (const auto &p : parts)

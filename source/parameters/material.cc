@@ -23,6 +23,8 @@ namespace formsolve
       const Choice<FractureMeasure> measure_names{
         {"through-thickness average", FractureMeasure::through_thickness},
         {"local", FractureMeasure::local}};
+      const Choice<FlowCurve>  flow_curve_names{{"swift", FlowCurve::swift},
+                                               {"voce", FlowCurve::voce}};
       const Choice<MeanStress> mean_stress_names{
         {"cell pressure", MeanStress::cell_pressure},
         {"projected", MeanStress::projected}};
@@ -135,9 +137,49 @@ namespace formsolve
       }
     } // namespace
 
+    namespace
+    {
+      /// The flow curve's kind and Voce's constants.
+      void declare_flow_curve(ParameterHandler &prm)
+      {
+        prm.declare_entry(
+          "Flow curve",
+          "swift",
+          Selection(flow_curve_names.pattern()),
+          "The strain hardening: swift, sigma = K (eps0 + eps)^n (Strength "
+          "coefficient, Prestrain, Hardening exponent); voce, sigma = A - B "
+          "exp(-C eps) (the Voce entries; Hardening exponent is then used "
+          "only as the n-value of the Keeler-Brazier forming limit). Either "
+          "times (rate/rate0)^m.");
+        prm.declare_entry("Voce saturation stress",
+                          "0",
+                          Double(),
+                          "A in the Voce curve (MPa), the flow stress as the "
+                          "strain grows large.");
+        prm.declare_entry("Voce hardening amplitude",
+                          "0",
+                          Double(),
+                          "B in the Voce curve (MPa): A - B is the initial "
+                          "yield stress; 0 <= B < A.");
+        prm.declare_entry(
+          "Tensile strength",
+          "0",
+          Double(0),
+          "R_m (MPa), the engineering tensile strength, for Siebel's "
+          "blank-holder force (Tools/Blank holder/Force = siebel and its "
+          "plausibility check); 0: from the flow curve at Considere's "
+          "uniform strain, sigma(eps_u) exp(-eps_u).");
+        prm.declare_entry("Voce hardening rate",
+                          "0",
+                          Double(),
+                          "C in the Voce curve (-), >= 0.");
+      }
+    } // namespace
+
     void Material::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Material");
+      declare_flow_curve(prm);
       prm.declare_entry(
         "Strength coefficient",
         "829",
@@ -195,6 +237,11 @@ namespace formsolve
     void Material::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Material");
+      flow_curve            = flow_curve_names.parse(prm.get("Flow curve"));
+      voce_saturation       = prm.get_double("Voce saturation stress");
+      voce_amplitude        = prm.get_double("Voce hardening amplitude");
+      voce_rate             = prm.get_double("Voce hardening rate");
+      tensile_strength      = prm.get_double("Tensile strength");
       strength_coefficient  = prm.get_double("Strength coefficient");
       hardening_exponent    = prm.get_double("Hardening exponent");
       prestrain             = prm.get_double("Prestrain");
@@ -220,6 +267,20 @@ namespace formsolve
       require_positive(strength_coefficient,
                        "Material/Strength coefficient",
                        "MPa");
+      if (flow_curve == FlowCurve::voce)
+        {
+          require_positive(voce_saturation,
+                           "Material/Voce saturation stress",
+                           "MPa");
+          require(std::isfinite(voce_amplitude) && voce_amplitude >= 0 &&
+                    voce_amplitude < voce_saturation,
+                  "Material/Voce hardening amplitude",
+                  "must be in [0, Voce saturation stress) MPa, so that the "
+                  "initial yield stress A - B is positive");
+          require(std::isfinite(voce_rate) && voce_rate >= 0,
+                  "Material/Voce hardening rate",
+                  "must be >= 0");
+        }
       require(std::isfinite(prestrain) &&
                 (prestrain > 0 || hardening_exponent == 0),
               "Material/Prestrain",

@@ -1,4 +1,5 @@
 #include <formsolve/parameters/parameters.h>
+#include <formsolve/parameters/plausibility.h>
 #include <formsolve/parameters/require.h>
 
 #include <array>
@@ -39,6 +40,15 @@ namespace formsolve
       nonlinear.parse(prm);
       linear.parse(prm);
       output.parse(prm);
+      if (tools.holder_force_by_siebel)
+        {
+          const auto s = siebel(*this);
+          require(s.applies,
+                  "Tools/Blank holder/Force",
+                  "siebel needs a round blank larger than a round holder "
+                  "opening and a round punch; give the force in N");
+          tools.holder_force = s.force;
+        }
     }
 
     namespace

@@ -2,6 +2,9 @@
 #include <formsolve/parameters/require.h>
 #include <formsolve/parameters/tools.h>
 
+#include <cmath>
+#include <cstdlib>
+
 namespace formsolve
 {
   namespace parameters
@@ -68,8 +71,9 @@ namespace formsolve
         "and blank holder above (z >= thickness).");
       prm.declare_entry("Friction coefficient",
                         str(d.friction_coefficient),
-                        Double(0),
-                        "Coulomb friction coefficient mu (-).");
+                        Double(0, 1.5),
+                        "Coulomb friction coefficient mu (-); above 0.5 "
+                        "(more than dry sheet forming shows) a warning.");
       prm.declare_entry(
         "Penalty factor",
         str(d.penalty_factor),
@@ -165,9 +169,14 @@ namespace formsolve
       prm.declare_entry(
         "Force",
         "2670",
-        Double(0),
-        "Blank-holder force for Control = force (N), for the full part "
-        "(the model's share is taken by the symmetry factor).");
+        Anything(),
+        "Blank-holder force for Control = force (N, >= 0), for the full "
+        "part (the model's share is taken by the symmetry factor); or "
+        "'siebel': Siebel's rule p = 0.0025 [(d0/d_p - 1)^2 + d_p/(200 t0)] "
+        "R_m on the initial flange under the holder, with R_m = "
+        "Material/Tensile strength (round blank, punch and holder; the value "
+        "is printed). A force below 1/10 or above 10 times Siebel's gets a "
+        "warning.");
       prm.leave_subsection();
       prm.leave_subsection();
     }
@@ -185,8 +194,20 @@ namespace formsolve
       prm.leave_subsection();
       prm.enter_subsection("Blank holder");
       blank_holder.parse(prm);
-      holder_control = control_names.parse(prm.get("Control"));
-      holder_force   = prm.get_double("Force");
+      holder_control          = control_names.parse(prm.get("Control"));
+      const std::string force = prm.get("Force");
+      holder_force_by_siebel  = force == "siebel";
+      if (!holder_force_by_siebel)
+        {
+          char *end    = nullptr;
+          holder_force = std::strtod(force.c_str(), &end);
+          require(end != force.c_str() && *end == '\0' &&
+                    std::isfinite(holder_force) && holder_force >= 0,
+                  "Tools/Blank holder/Force",
+                  "`" + force +
+                    "` is not accepted; it takes a force in N "
+                    "(a number >= 0) or `siebel`");
+        }
       prm.leave_subsection();
       prm.leave_subsection();
     }

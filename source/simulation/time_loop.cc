@@ -206,6 +206,12 @@ namespace formsolve
                 << damage.conversion() << ": a = " << damage.a_used()
                 << ", b = " << damage.b_used() << "\n";
         }
+      if (const auto &m = prm.material;
+          m.flow_curve == parameters::FlowCurve::voce)
+        pcout << "flow curve: Voce, sigma = " << m.voce_saturation << " - "
+              << m.voce_amplitude << " exp(-" << m.voce_rate
+              << " eps) MPa; Keeler-Brazier's forming limit with n = "
+              << m.hardening_exponent << "\n";
       if (const auto advice = app::blas_advice(); !advice.empty())
         pcout << "note: OpenBLAS runs its generic Prescott kernels on this "
                  "CPU, which makes the factorisations about 2x slower; start "

@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <formsolve/model/dimensions.h>
+#include <formsolve/parameters/plausibility.h>
 #include <formsolve/postprocess/atomic_output.h>
 #include <formsolve/simulation/time_loop.h>
 #include <formsolve/state/sheet_integrals.h>
@@ -204,6 +205,11 @@ namespace formsolve
           for (const double a : earing.ear_angles)
             f << ' ' << a;
         }
+      f << "\nblank_holder_force = " << prm.tools.holder_force;
+      const auto warnings = parameters::plausibility_warnings(prm);
+      f << "\nwarnings = " << warnings.size();
+      for (std::size_t k = 0; k < warnings.size(); ++k)
+        f << "\nwarning_" << k + 1 << " = " << warnings[k];
       f << "\nend_reason = " << summary.end_reason << "\n";
       postprocess::write_atomically(prm.output.directory + "/run-summary.txt",
                                     [&](std::ostream &o) { o << f.str(); });

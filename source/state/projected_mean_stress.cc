@@ -12,11 +12,11 @@ namespace formsolve
     using namespace dealii;
 
     template <int dim>
-    void ProjectedMeanStress<dim>::project(
-      const DoFHandler<dim>      &dof_handler,
-      model::CellKinematics<dim> &k,
-      const std::vector<double>  &cell_values,
-      const VectorType           &layout)
+    void
+    ProjectedMeanStress<dim>::project(const DoFHandler<dim>      &dof_handler,
+                                      model::CellKinematics<dim> &k,
+                                      const std::vector<double>  &cell_values,
+                                      const VectorType           &layout)
     {
       const auto &fe    = dof_handler.get_fe();
       const auto  owned = dof_handler.locally_owned_dofs();
@@ -26,7 +26,7 @@ namespace formsolve
       DoFTools::make_hanging_node_constraints(dof_handler, hanging);
       hanging.close();
 
-      VectorType     sums(owned, layout.get_mpi_communicator()),
+      VectorType sums(owned, layout.get_mpi_communicator()),
         weights(owned, layout.get_mpi_communicator());
       const unsigned int                   n = fe.n_dofs_per_cell();
       Vector<double>                       local_sum(n), local_weight(n);
@@ -39,8 +39,7 @@ namespace formsolve
             for (unsigned int q = 0; q < k.n_points(); ++q)
               for (unsigned int i = 0; i < n; ++i)
                 if (fe.system_to_component_index(i).first == 0)
-                  local_weight[i] +=
-                    k.fe_values().shape_value(i, q) * k.dV(q);
+                  local_weight[i] += k.fe_values().shape_value(i, q) * k.dV(q);
             local_sum = local_weight;
             local_sum *= cell_values[cell->active_cell_index()];
             cell->get_dof_indices(dofs);

@@ -43,6 +43,19 @@ expect() {
 
 sed 's/set Thickness    = 10/set Thicknes    = 10/' "$base" > "$work/unknown.prm"
 expect unknown_entry "Thicknes" "$work/unknown.prm"
+# In the user's words: the line, the closest declared names, plain ranges.
+expect did_you_mean_entry "unknown.prm, line" "$work/unknown.prm"
+expect did_you_mean_entry_name 'did you mean `Thickness`?' "$work/unknown.prm"
+printf 'include %s\nsubsection Tools\n  subsection Blankholder\n  end\nend\n' "$(realpath "$base")" > "$work/subsection.prm"
+expect did_you_mean_subsection 'no subsection `Blankholder` in subsection `Tools`; did you mean `Blank holder`?' \
+  "$work/subsection.prm"
+expect did_you_mean_override '--set "Tool/Punch/Stroke=5": there is no subsection `Tool` at the top level; did you mean `Tools`?' \
+  "$base" --set "Tool/Punch/Stroke=5"
+expect decimal_comma 'Geometry/Thickness=1,0": `1,0` is not accepted; it takes a number (write decimals with a point' \
+  "$base" --set "Geometry/Thickness=1,0"
+expect range_in_words 'it takes a number from 0 to 1' "$base" --set "Material/Hardening exponent=2"
+printf 'include %s\nsubsection Geometry\n' "$(realpath "$base")" > "$work/unclosed.prm"
+expect unclosed_subsection 'subsection `Geometry` is not closed by `end`' "$work/unclosed.prm"
 sed 's/set Thickness    = 10/set Thickness    = ten/' "$base" > "$work/type.prm"
 expect wrong_type "Thickness" "$work/type.prm"
 expect unknown_override "Geometry/Thicknes" "$base" --set "Geometry/Thicknes=1"
@@ -52,6 +65,10 @@ expect missing_mesh "no-such-blank.msh" "$base" --set "Geometry/Blank shape=gmsh
   --set "Geometry/Mesh file=no-such-blank.msh"
 expect missing_input "does-not-exist.prm" "$work/does-not-exist.prm"
 expect blank_inside_tool "Tools/Punch" "$base" --set "Tools/Punch/Gap=-0.5"
+expect voce_unset "Material/Voce saturation stress" "$base" --set "Material/Flow curve=voce"
+expect voce_negative_yield "Material/Voce hardening amplitude" "$base" \
+  --set "Material/Flow curve=voce" --set "Material/Voce saturation stress=300" \
+  --set "Material/Voce hardening amplitude=400"
 expect zero_time_step "Time stepping/Time step" "$base" --set "Time stepping/Time step=0"
 expect negative_time_step "Time stepping/Time step" "$base" --set "Time stepping/Time step=-1"
 printf 'include no-such-include.prm\n' > "$work/include.prm"

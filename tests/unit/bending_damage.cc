@@ -37,7 +37,7 @@ namespace
 {
   const double sigma0 = 100, a = 0.3, b = 0.2, dt = 1e-3, step = 10;
 
-  parameters::Material strip_material(const double             r,
+  parameters::Material strip_material(const double                 r,
                                       const parameters::MeanStress mean)
   {
     parameters::Material m;
@@ -76,12 +76,12 @@ namespace
       return (sign * std::sqrt(1 + 2 * r) / 3 + a) * k * kappa *
              std::abs(zeta) * step / b;
     };
-    const double  scale = exact(t / 2);
-    FEValues<3>   fv(s.reference_mapping,
+    const double scale = exact(t / 2);
+    FEValues<3>  fv(s.reference_mapping,
                    s.fe,
                    s.history_rule,
                    update_quadrature_points);
-    Errors        e;
+    Errors       e;
     for (const auto &cell : s.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -111,8 +111,8 @@ namespace
   {
     const std::string name =
       std::string(r == 1 ? "von Mises" : "Hill r = 2") + ", " +
-      (mean == parameters::MeanStress::projected ? "projected" :
-                                                   "cell pressure") +
+      (mean == parameters::MeanStress::projected ? "projected"
+                                                 : "cell pressure") +
       ", Q" + std::to_string(degree) + ", " + std::to_string(layers) +
       " layers";
     test::BendingStrip strip({},
@@ -120,8 +120,8 @@ namespace
                              strip_material(r, mean),
                              dt);
     strip.solve_flow();
-    const material::DamageCriteria   damage(strip.prm.material);
-    const state::HistoryUpdate<3>    update(strip.material,
+    const material::DamageCriteria damage(strip.prm.material);
+    const state::HistoryUpdate<3>  update(strip.material,
                                          strip.state.kinematics,
                                          strip.state.reference_mapping,
                                          degree,
@@ -131,10 +131,11 @@ namespace
                    strip.ghost,
                    step,
                    strip.state.history);
-    const Errors e = local_errors(strip, r);
+    const Errors                           e = local_errors(strip, r);
     postprocess::ThroughThicknessDamage<3> measure;
-    const double column = measure.measure(strip.state, damage, false).oyane.value;
-    const double kappa  = 2 * strip.size.omega / strip.size.L;
+    const double                           column =
+      measure.measure(strip.state, damage, false).oyane.value;
+    const double kappa        = 2 * strip.size.omega / strip.size.L;
     const double column_exact = a * (1 + r) / std::sqrt(1 + 2 * r) * kappa *
                                 step * strip.size.t / (4 * b);
     std::cout << name << ": largest local I " << e.largest_local
@@ -148,7 +149,8 @@ namespace
                 0.02);
     // Q1 points, and the projection's across two layers (the axis's jump
     // smeared onto the outer fibre): printed, not the closed form.
-    if (degree == 1 || (mean == parameters::MeanStress::projected && layers < 4))
+    if (degree == 1 ||
+        (mean == parameters::MeanStress::projected && layers < 4))
       return;
     test::close(name + ": largest local I / closed form",
                 e.largest_local / e.largest_exact,

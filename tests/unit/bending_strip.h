@@ -30,8 +30,8 @@ namespace test
     double L = 4, b = 1, t = 1, omega = 0.1;
   };
 
-  inline parameters::Run bending_run(const StripSize             &s,
-                                     const parameters::Mesh      &mesh,
+  inline parameters::Run bending_run(const StripSize            &s,
+                                     const parameters::Mesh     &mesh,
                                      const parameters::Material &material)
   {
     parameters::Run prm;
@@ -48,10 +48,10 @@ namespace test
   class BendingStrip : public ToyProblem
   {
   public:
-    BendingStrip(const StripSize             &size,
-                 const parameters::Mesh      &mesh,
+    BendingStrip(const StripSize            &size,
+                 const parameters::Mesh     &mesh,
                  const parameters::Material &material_prm,
-                 const double                 dt)
+                 const double                dt)
         : size(size)
         , dt(dt)
         , prm(bending_run(size, mesh, material_prm))
@@ -67,7 +67,10 @@ namespace test
       make_constraints(bc, true);
       make_constraints(homogeneous, false);
       DynamicSparsityPattern dsp(state.relevant);
-      DoFTools::make_sparsity_pattern(state.dof_handler, dsp, homogeneous, false);
+      DoFTools::make_sparsity_pattern(state.dof_handler,
+                                      dsp,
+                                      homogeneous,
+                                      false);
       SparsityTools::distribute_sparsity_pattern(dsp,
                                                  state.owned,
                                                  MPI_COMM_WORLD,
@@ -133,7 +136,7 @@ namespace test
   private:
     void make_constraints(AffineConstraints<double> &c, const bool values)
     {
-      const auto &dh = state.dof_handler;
+      const auto                                 &dh = state.dof_handler;
       std::map<types::global_dof_index, Point<3>> points;
       DoFTools::map_dofs_to_support_points(state.reference_mapping, dh, points);
       c.clear();
@@ -154,7 +157,8 @@ namespace test
                 if (comp == 1)
                   value = 0;
                 else if (comp == 0 && end)
-                  value = (x[0] > 0 ? 1 : -1) * size.omega * (x[2] - size.t / 2);
+                  value =
+                    (x[0] > 0 ? 1 : -1) * size.omega * (x[2] - size.t / 2);
                 else if (comp == 2 && end && mid)
                   value = 0;
                 else

@@ -124,5 +124,30 @@ int main()
       for (const double r : {3e-5, 1e-2, 1.})
         check_tangent(piecewise, "piecewise, " + tag, r, strain, dt);
     }
+
+  // Voce's curve sigma = A - B exp(-C eps) (rate/rate0)^m: its closed form,
+  // its slope, and the point law's tangent through it.
+  p.flow_curve      = parameters::FlowCurve::voce;
+  p.voce_saturation = 330.2;
+  p.voce_amplitude  = 190.0;
+  p.voce_rate       = 12.4;
+  p.rigid_zone      = parameters::RigidZone::smooth;
+  p.validate();
+  const material::FlowStress voce(p);
+  const double               factor = std::pow(2., p.rate_sensitivity);
+  for (const double e : {0., 0.1, 0.5})
+    {
+      test::close("Voce: sigma(" + std::to_string(e) + ")",
+                  voce.value(e, 2.),
+                  (330.2 - 190.0 * std::exp(-12.4 * e)) * factor,
+                  1e-9);
+      test::close("Voce: slope at " + std::to_string(e),
+                  voce.d_strain(e, 2.),
+                  190.0 * 12.4 * std::exp(-12.4 * e) * factor,
+                  1e-9);
+    }
+  const material::RigidViscoplastic voce_law(p);
+  for (const double r : {3e-5, 1e-2, 1.})
+    check_tangent(voce_law, "Voce", r, strain, dt);
   return test::result();
 }

@@ -7,7 +7,8 @@ namespace formsolve
 {
   namespace material
   {
-    /// sigma_bar = K (eps0 + eps)^n (rate / rate0)^m   (doc/theory.md, eq. 2)
+    /// sigma_bar = h(eps) (rate / rate0)^m with Swift's h = K (eps0 + eps)^n
+    /// or Voce's h = A - B exp(-C eps)   (doc/theory.md, eq. 2)
     class FlowStress
     {
     public:
@@ -18,7 +19,12 @@ namespace formsolve
       double d_rate(const double strain, const double rate) const;
 
     private:
-      double K, n, eps0, m, rate0;
+      /// h(eps) and dh/deps.
+      double hardening(const double strain) const;
+      double hardening_slope(const double strain) const;
+
+      bool   voce;
+      double K, n, eps0, A, B, C, m, rate0;
     };
   } // namespace material
 } // namespace formsolve

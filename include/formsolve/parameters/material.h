@@ -29,6 +29,13 @@ namespace formsolve
       local              // the largest quadrature-point value
     };
 
+    /// The strain hardening of the flow stress (doc/theory.md, eq. 2).
+    enum class FlowCurve
+    {
+      swift, // K (eps0 + eps)^n
+      voce   // A - B exp(-C eps)
+    };
+
     /// The mean stress in the fracture integrals (doc/theory.md, 11b).
     enum class MeanStress
     {
@@ -45,9 +52,14 @@ namespace formsolve
 
     struct Material
     {
+      FlowCurve  flow_curve            = FlowCurve::swift;
       double     strength_coefficient  = 829;   // K (MPa)
       double     hardening_exponent    = 0.2;   // n
       double     prestrain             = 0.002; // eps_0
+      double     voce_saturation       = 0;     // A (MPa)
+      double     voce_amplitude        = 0;     // B (MPa)
+      double     voce_rate             = 0;     // C (-)
+      double     tensile_strength      = 0;     // R_m (MPa); 0: flow curve
       double     rate_sensitivity      = 0;     // m
       double     reference_strain_rate = 1;     // 1/s
       double     limiting_strain_rate  = 1e-4;  // 1/s, rigid-zone cutoff
@@ -67,6 +79,13 @@ namespace formsolve
       // (minor, major true strains, minor increasing) is given.
       std::vector<std::pair<double, double>> forming_limit_table;
       double                                 safety_margin = 0.1; // (-)
+
+      /// The flow curve's stress scale (MPa): K, or A for Voce.
+      double stress_scale() const
+      {
+        return flow_curve == FlowCurve::voce ? voce_saturation
+                                             : strength_coefficient;
+      }
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);

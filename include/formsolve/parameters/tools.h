@@ -54,8 +54,9 @@ namespace formsolve
       double punch_stroke = 30; // mm, total punch travel (bound of the run)
       double punch_speed  = 1;  // mm/s, in -z
 
-      HolderControl holder_control = HolderControl::force;
-      double        holder_force   = 2670; // N, full part
+      HolderControl holder_control         = HolderControl::force;
+      double        holder_force           = 2670;  // N, full part
+      bool          holder_force_by_siebel = false; // Force = siebel
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);

@@ -1,0 +1,101 @@
+#include <formsolve/parameters/plausibility.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    double tensile_strength(const Material &m)
+    {
+      if (m.tensile_strength > 0)
+        return m.tensile_strength;
+      // Considere: d sigma/d eps = sigma at the uniform strain eps_u; the
+      // engineering stress there is sigma(eps_u) exp(-eps_u).
+      double eps_u = 0, sigma_u = 0;
+      if (m.flow_curve == FlowCurve::voce)
+        {
+          const double A = m.voce_saturation, B = m.voce_amplitude,
+                       C = m.voce_rate;
+          eps_u = B * (C + 1) > A ? std::log(B * (C + 1) / A) / C : 0.;
+          sigma_u = A - B * std::exp(-C * eps_u);
+        }
+      else
+        {
+          eps_u   = std::max(m.hardening_exponent - m.prestrain, 0.);
+          sigma_u = m.strength_coefficient *
+                    std::pow(m.prestrain + eps_u, m.hardening_exponent);
+        }
+      return sigma_u * std::exp(-eps_u);
+    }
+
+    SiebelEstimate siebel(const Run &run)
+    {
+      SiebelEstimate s;
+      const auto    &g = run.geometry;
+      const auto    &t = run.tools;
+      s.applies = g.blank_shape == BlankShape::round &&
+                  t.punch.shape == ToolShape::round &&
+                  t.blank_holder.enabled &&
+                  t.blank_holder.shape == ToolShape::round &&
+                  g.blank_diameter > t.blank_holder.diameter;
+      if (!s.applies)
+        return s;
+      const double beta = g.blank_diameter / t.punch.diameter;
+      s.pressure =
+        0.0025 *
+        ((beta - 1) * (beta - 1) + t.punch.diameter / (200 * g.thickness)) *
+        tensile_strength(run.material);
+      s.area = M_PI / 4 *
+               (g.blank_diameter * g.blank_diameter -
+                t.blank_holder.diameter * t.blank_holder.diameter);
+      s.force = s.pressure * s.area;
+      return s;
+    }
+
+    std::vector<std::string> plausibility_warnings(const Run &run)
+    {
+      std::vector<std::string> w;
+      const auto               say = [&](auto &&...parts) {
+        std::ostringstream s;
+        (s << ... << parts);
+        w.push_back(s.str());
+      };
+      const auto &g = run.geometry;
+      if (g.thickness < 0.05)
+        say("Geometry/Thickness = ", g.thickness,
+            " mm is thinner than any sheet; lengths are in mm, not m");
+      for (const Tool *t : {&run.tools.punch, &run.tools.die,
+                            &run.tools.blank_holder})
+        if (t->enabled && t->shape == ToolShape::round && t->diameter < 1)
+          say("Tools/", t->name, "/Diameter = ", t->diameter,
+              " mm is smaller than 1 mm; lengths are in mm, not m");
+      const double stress = run.material.stress_scale();
+      if (stress > 1e4)
+        say(run.material.flow_curve == FlowCurve::voce ?
+              "Material/Voce saturation stress = " :
+              "Material/Strength coefficient = ",
+            stress, " MPa is above 10 GPa; stresses are in MPa, not Pa");
+      for (const Tool *t : {&run.tools.punch, &run.tools.die,
+                            &run.tools.blank_holder})
+        if (t->enabled && t->friction_coefficient > 0.5)
+          say("Tools/", t->name, "/Friction coefficient = ",
+              t->friction_coefficient,
+              " is above 0.5, more than lubricated or dry sheet forming "
+              "shows (0.02-0.3)");
+      const auto s = siebel(run);
+      const auto &tools = run.tools;
+      if (s.applies && tools.holder_control == HolderControl::force &&
+          (tools.holder_force < 0.1 * s.force ||
+           tools.holder_force > 10 * s.force))
+        say("Tools/Blank holder/Force = ", tools.holder_force,
+            " N is far from Siebel's estimate ", std::round(s.force),
+            " N (p = ", s.pressure, " MPa on the initial flange of ", s.area,
+            " mm^2 with R_m = ", tensile_strength(run.material),
+            " MPa); the force is in N, for the full part (Force = siebel "
+            "sets the estimate)");
+      return w;
+    }
+  } // namespace parameters
+} // namespace formsolve

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Magnitude checks and Siebel's force (--validate, nothing written):
+# - Force = siebel on the default cup with R_m = 488 MPa gives the 2671 N its
+#   .prm derives by hand; R_m from the flow curve at Considere's uniform
+#   strain: Swift 829 (0.002 + eps)^0.2 -> 829 0.2^0.2 e^-0.198 = 492.9 MPa,
+#   Voce 330.2 - 190 exp(-12.4 eps) -> 259.1 MPa;
+# - lengths in metres, stresses in Pa, a holder force far from Siebel's and
+#   mu > 0.5 each get one warning naming the entry; the shipped case none.
+set -uo pipefail
+exe=$1 prm=$2
+fail=0
+run() { "$exe" --validate "$prm" "$@" 2>&1; }
+has() { # NAME PATTERN OUTPUT
+  if grep -qF -- "$2" <<< "$3"; then echo "ok   $1"; else echo "FAIL $1: no '$2' in:"; echo "$3"; fail=1; fi
+}
+out=$(run --set "Tools/Blank holder/Force=siebel" --set "Material/Tensile strength=488")
+has siebel_force "blank-holder force by Siebel's rule: 2671" "$out"
+out=$(run --set "Tools/Blank holder/Force=siebel")
+has considere_swift "R_m = 492.9" "$out"
+out=$(run --set "Tools/Blank holder/Force=siebel" --set "Material/Flow curve=voce" \
+  --set "Material/Voce saturation stress=330.2" --set "Material/Voce hardening amplitude=190" \
+  --set "Material/Voce hardening rate=12.4")
+has considere_voce "R_m = 259.1" "$out"
+out=$(run)
+if grep -q "warning" <<< "$out"; then echo "FAIL shipped case warns:"; echo "$out"; fail=1; else echo "ok   no warning for the shipped case"; fi
+has metres "warning: Geometry/Thickness = 0.00078 mm is thinner than any sheet; lengths are in mm, not m" \
+  "$(run --set "Geometry/Thickness=0.00078")"
+has pascal "warning: Material/Strength coefficient = 8.29e+08 MPa is above 10 GPa" \
+  "$(run --set "Material/Strength coefficient=829e6")"
+has holder_kN "warning: Tools/Blank holder/Force = 2.6 N is far from Siebel's estimate" \
+  "$(run --set "Tools/Blank holder/Force=2.6")"
+has friction "warning: Tools/Die/Friction coefficient = 0.8 is above 0.5" \
+  "$(run --set "Tools/Die/Friction coefficient=0.8")"
+exit $fail
