@@ -70,7 +70,7 @@ int main(int argc, char **argv)
       if (cl.print_parameters || cl.parameter_manual)
         {
           if (root && cl.print_parameters)
-            prm.print_parameters(std::cout, ParameterHandler::PRM);
+            formsolve::parameters::write_parameter_file(prm, std::cout);
           else if (root)
             formsolve::parameters::write_manual(prm, std::cout);
           return 0;

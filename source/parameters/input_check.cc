@@ -43,10 +43,10 @@ namespace formsolve
             for (std::size_t j = 1; j <= b.size(); ++j)
               {
                 const std::size_t up = row[j];
-                row[j] = std::min({row[j] + 1,
-                                   row[j - 1] + 1,
-                                   diagonal + (a[i - 1] != b[j - 1])});
-                diagonal = up;
+                row[j]               = std::min({row[j] + 1,
+                                                 row[j - 1] + 1,
+                                                 diagonal + (a[i - 1] != b[j - 1])});
+                diagonal             = up;
               }
           }
         return row[b.size()];
@@ -76,10 +76,10 @@ namespace formsolve
                           const std::vector<std::string> &path,
                           const std::vector<std::string> &names)
       {
-        std::string m = "there is no " + what + " `" + name + "` " +
-                        (path.empty() ? std::string("at the top level") :
-                                        "in subsection `" + join_path(path) +
-                                          "`");
+        std::string m =
+          "there is no " + what + " `" + name + "` " +
+          (path.empty() ? std::string("at the top level")
+                        : "in subsection `" + join_path(path) + "`");
         const std::string near = closest_names(name, names);
         if (!near.empty())
           m += "; did you mean " + near + "?";
@@ -87,8 +87,7 @@ namespace formsolve
         for (const auto &n : names)
           list += (list.empty() ? "" : ", ") + n;
         return m + " (declared " + (what == "entry" ? "entries" : what + "s") +
-               " there: " +
-               (list.empty() ? "none" : list) + ")";
+               " there: " + (list.empty() ? "none" : list) + ")";
       }
 
       /// accepted_values() in a sentence: "real in [0, 1]" -> "a number from
@@ -100,12 +99,12 @@ namespace formsolve
               {"integer", "a whole number"}})
           if (a.rfind(kind, 0) == 0)
             {
-              a = words + a.substr(kind.size());
+              a               = words + a.substr(kind.size());
               const auto open = a.find(" in [");
               if (open != std::string::npos && a.back() == ']')
                 {
                   const auto comma = a.find(", ", open);
-                  a = a.substr(0, open) + " from " +
+                  a                = a.substr(0, open) + " from " +
                       a.substr(open + 5, comma - open - 5) + " to " +
                       a.substr(comma + 2, a.size() - comma - 3);
                 }
@@ -120,14 +119,13 @@ namespace formsolve
       {
         const auto pattern = dealii::Patterns::pattern_factory(entry.pattern);
         AssertThrow(pattern->match(value),
-                    ExcMessage(where + ": `" + value +
-                               "` is not accepted; it takes " +
-                               in_words(accepted_values(entry.pattern)) +
-                               (value.find(',') != std::string::npos &&
-                                    entry.pattern.find("Double") !=
-                                      std::string::npos ?
-                                  " (write decimals with a point: 1.5)" :
-                                  "")));
+                    ExcMessage(
+                      where + ": `" + value + "` is not accepted; it takes " +
+                      in_words(accepted_values(entry.pattern)) +
+                      (value.find(',') != std::string::npos &&
+                           entry.pattern.find("Double") != std::string::npos
+                         ? " (write decimals with a point: 1.5)"
+                         : "")));
       }
 
       /// The section at @p path below @p root.
@@ -148,7 +146,8 @@ namespace formsolve
       for (const auto &n : names)
         best = std::min(best, distance(word, n));
       // A typo, not another word: at most a third of the letters changed.
-      if (best == std::string::npos || best > std::max<std::size_t>(2, word.size() / 3))
+      if (best == std::string::npos ||
+          best > std::max<std::size_t>(2, word.size() / 3))
         return "";
       std::string out;
       for (const auto &n : names)
@@ -178,10 +177,9 @@ namespace formsolve
       std::vector<std::string> path;
       for (const auto &l : lines)
         {
-          const std::string where =
-            l.file + ", line " + std::to_string(l.line);
-          std::string text = l.text.substr(0, l.text.find('#'));
-          text             = trim(text);
+          const std::string where = l.file + ", line " + std::to_string(l.line);
+          std::string       text  = l.text.substr(0, l.text.find('#'));
+          text                    = trim(text);
           if (text.empty())
             continue;
           const auto        space = text.find_first_of(" \t");
@@ -191,12 +189,11 @@ namespace formsolve
           const DeclaredSection &here = *find(declared, path);
           if (word == "subsection")
             {
-              AssertThrow(here.sections.count(rest),
-                          ExcMessage(where + ": " +
-                                     unknown("subsection",
-                                             rest,
-                                             path,
-                                             names_of(here.sections))));
+              AssertThrow(
+                here.sections.count(rest),
+                ExcMessage(
+                  where + ": " +
+                  unknown("subsection", rest, path, names_of(here.sections))));
               path.push_back(rest);
             }
           else if (word == "end")
@@ -213,12 +210,11 @@ namespace formsolve
                           ExcMessage(where + ": `" + text +
                                      "` is not `set Entry = value`"));
               const std::string name = trim(rest.substr(0, eq));
-              AssertThrow(here.entries.count(name),
-                          ExcMessage(where + ": " +
-                                     unknown("entry",
-                                             name,
-                                             path,
-                                             names_of(here.entries))));
+              AssertThrow(
+                here.entries.count(name),
+                ExcMessage(
+                  where + ": " +
+                  unknown("entry", name, path, names_of(here.entries))));
               check_value(here.entries.at(name),
                           where + ": " + join_path(path) + "/" + name,
                           trim(rest.substr(eq + 1)));
@@ -230,10 +226,10 @@ namespace formsolve
                                    "Entry = value` nor `end`"));
         }
       AssertThrow(path.empty(),
-                  ExcMessage((lines.empty() ? std::string("input") :
-                                              lines.back().file) +
-                             ": subsection `" + join_path(path) +
-                             "` is not closed by `end`"));
+                  ExcMessage(
+                    (lines.empty() ? std::string("input") : lines.back().file) +
+                    ": subsection `" + join_path(path) +
+                    "` is not closed by `end`"));
     }
 
     void check_override(const DeclaredSection &declared,
@@ -253,21 +249,18 @@ namespace formsolve
       for (const auto &p : parts)
         {
           const DeclaredSection &here = *find(declared, path);
-          AssertThrow(here.sections.count(p),
-                      ExcMessage(where + ": " +
-                                 unknown("subsection",
-                                         p,
-                                         path,
-                                         names_of(here.sections))));
+          AssertThrow(
+            here.sections.count(p),
+            ExcMessage(
+              where + ": " +
+              unknown("subsection", p, path, names_of(here.sections))));
           path.push_back(p);
         }
       const DeclaredSection &here = *find(declared, path);
       AssertThrow(here.entries.count(entry),
-                  ExcMessage(where + ": " +
-                             unknown("entry",
-                                     entry,
-                                     path,
-                                     names_of(here.entries))));
+                  ExcMessage(
+                    where + ": " +
+                    unknown("entry", entry, path, names_of(here.entries))));
       check_value(here.entries.at(entry), where, value);
     }
   } // namespace parameters

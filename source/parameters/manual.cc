@@ -56,6 +56,57 @@ namespace formsolve
       }
     } // namespace
 
+    namespace
+    {
+      /// @p text as '#' comment lines of at most 79 characters.
+      void comment(const std::string &text,
+                   const std::string &indent,
+                   std::ostream      &out)
+      {
+        std::istringstream in(text);
+        std::string        line = indent + "#", word;
+        while (in >> word)
+          {
+            if (line.size() + 1 + word.size() > 79 && line != indent + "#")
+              {
+                out << line << '\n';
+                line = indent + "#";
+              }
+            line += " " + word;
+          }
+        out << line << '\n';
+      }
+
+      void write_prm_section(const DeclaredSection &s,
+                             const std::string     &indent,
+                             std::ostream          &out)
+      {
+        for (const auto &[name, e] : s.entries)
+          {
+            comment(e.documentation, indent, out);
+            comment("Accepts: " + accepted_values(e.pattern) + ".",
+                    indent,
+                    out);
+            out << indent << "set " << name << " = " << e.default_value
+                << "\n\n";
+          }
+        for (const auto &[name, sub] : s.sections)
+          {
+            out << indent << "subsection " << name << '\n';
+            write_prm_section(sub, indent + "  ", out);
+            out << indent << "end\n\n";
+          }
+      }
+    } // namespace
+
+    void write_parameter_file(const dealii::ParameterHandler &prm,
+                              std::ostream                   &out)
+    {
+      out << "# formsolve: every entry with its default, what it means (units "
+             "in\n# parentheses) and what it accepts (doc/parameters.md).\n\n";
+      write_prm_section(declared(prm), "", out);
+    }
+
     void write_manual(const dealii::ParameterHandler &prm, std::ostream &out)
     {
       std::stringstream json;

@@ -18,8 +18,8 @@ namespace formsolve
         {
           const double A = m.voce_saturation, B = m.voce_amplitude,
                        C = m.voce_rate;
-          eps_u = B * (C + 1) > A ? std::log(B * (C + 1) / A) / C : 0.;
-          sigma_u = A - B * std::exp(-C * eps_u);
+          eps_u          = B * (C + 1) > A ? std::log(B * (C + 1) / A) / C : 0.;
+          sigma_u        = A - B * std::exp(-C * eps_u);
         }
       else
         {
@@ -35,9 +35,8 @@ namespace formsolve
       SiebelEstimate s;
       const auto    &g = run.geometry;
       const auto    &t = run.tools;
-      s.applies = g.blank_shape == BlankShape::round &&
-                  t.punch.shape == ToolShape::round &&
-                  t.blank_holder.enabled &&
+      s.applies        = g.blank_shape == BlankShape::round &&
+                  t.punch.shape == ToolShape::round && t.blank_holder.enabled &&
                   t.blank_holder.shape == ToolShape::round &&
                   g.blank_diameter > t.blank_holder.diameter;
       if (!s.applies)
@@ -64,35 +63,48 @@ namespace formsolve
       };
       const auto &g = run.geometry;
       if (g.thickness < 0.05)
-        say("Geometry/Thickness = ", g.thickness,
+        say("Geometry/Thickness = ",
+            g.thickness,
             " mm is thinner than any sheet; lengths are in mm, not m");
-      for (const Tool *t : {&run.tools.punch, &run.tools.die,
-                            &run.tools.blank_holder})
+      for (const Tool *t :
+           {&run.tools.punch, &run.tools.die, &run.tools.blank_holder})
         if (t->enabled && t->shape == ToolShape::round && t->diameter < 1)
-          say("Tools/", t->name, "/Diameter = ", t->diameter,
+          say("Tools/",
+              t->name,
+              "/Diameter = ",
+              t->diameter,
               " mm is smaller than 1 mm; lengths are in mm, not m");
       const double stress = run.material.stress_scale();
       if (stress > 1e4)
-        say(run.material.flow_curve == FlowCurve::voce ?
-              "Material/Voce saturation stress = " :
-              "Material/Strength coefficient = ",
-            stress, " MPa is above 10 GPa; stresses are in MPa, not Pa");
-      for (const Tool *t : {&run.tools.punch, &run.tools.die,
-                            &run.tools.blank_holder})
+        say(run.material.flow_curve == FlowCurve::voce
+              ? "Material/Voce saturation stress = "
+              : "Material/Strength coefficient = ",
+            stress,
+            " MPa is above 10 GPa; stresses are in MPa, not Pa");
+      for (const Tool *t :
+           {&run.tools.punch, &run.tools.die, &run.tools.blank_holder})
         if (t->enabled && t->friction_coefficient > 0.5)
-          say("Tools/", t->name, "/Friction coefficient = ",
+          say("Tools/",
+              t->name,
+              "/Friction coefficient = ",
               t->friction_coefficient,
               " is above 0.5, more than lubricated or dry sheet forming "
               "shows (0.02-0.3)");
-      const auto s = siebel(run);
+      const auto  s     = siebel(run);
       const auto &tools = run.tools;
       if (s.applies && tools.holder_control == HolderControl::force &&
           (tools.holder_force < 0.1 * s.force ||
            tools.holder_force > 10 * s.force))
-        say("Tools/Blank holder/Force = ", tools.holder_force,
-            " N is far from Siebel's estimate ", std::round(s.force),
-            " N (p = ", s.pressure, " MPa on the initial flange of ", s.area,
-            " mm^2 with R_m = ", tensile_strength(run.material),
+        say("Tools/Blank holder/Force = ",
+            tools.holder_force,
+            " N is far from Siebel's estimate ",
+            std::round(s.force),
+            " N (p = ",
+            s.pressure,
+            " MPa on the initial flange of ",
+            s.area,
+            " mm^2 with R_m = ",
+            tensile_strength(run.material),
             " MPa); the force is in N, for the full part (Force = siebel "
             "sets the estimate)");
       return w;

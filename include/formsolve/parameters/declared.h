@@ -16,7 +16,8 @@ namespace formsolve
     struct DeclaredEntry
     {
       std::string default_value;
-      std::string pattern; // deal.II's description, e.g. "[Double 0...1 (inclusive)]"
+      std::string
+        pattern; // deal.II's description, e.g. "[Double 0...1 (inclusive)]"
       std::string documentation;
     };
 

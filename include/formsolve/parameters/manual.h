@@ -13,5 +13,11 @@ namespace formsolve
     /// Every subsection of @p prm as a Markdown table: entry, default, what
     /// it accepts, and its documentation (units included there).
     void write_manual(const dealii::ParameterHandler &prm, std::ostream &out);
+
+    /// A complete parameter file with the defaults, each entry preceded by
+    /// its documentation and what it accepts (`formsolve
+    /// --print-parameters`).
+    void write_parameter_file(const dealii::ParameterHandler &prm,
+                              std::ostream                   &out);
   } // namespace parameters
 } // namespace formsolve
