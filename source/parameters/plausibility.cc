@@ -90,6 +90,25 @@ namespace formsolve
               t->friction_coefficient,
               " is above 0.5, more than lubricated or dry sheet forming "
               "shows (0.02-0.3)");
+      // Ironing: the wall passes a gap thinner than the sheet.
+      const auto &pu = run.tools.punch, &di = run.tools.die;
+      if (pu.enabled && di.enabled && pu.shape == di.shape &&
+          pu.shape != ToolShape::flat)
+        {
+          const double clearance =
+            pu.shape == ToolShape::round
+              ? 0.5 * (di.diameter - pu.diameter)
+              : 0.5 * std::min(di.length - pu.length, di.width - pu.width);
+          if (clearance < g.thickness)
+            say("the clearance between punch and die (",
+                clearance,
+                " mm per side) is smaller than the sheet thickness (",
+                g.thickness,
+                " mm): the cup wall will be ironed by ",
+                std::round(100 * (1 - clearance / g.thickness)),
+                " % or more (deliberate ironing is fine; otherwise check "
+                "Tools/Die/Diameter and Tools/Punch/Diameter)");
+        }
       const auto  s     = siebel(run);
       const auto &tools = run.tools;
       if (s.applies && tools.holder_control == HolderControl::force &&

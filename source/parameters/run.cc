@@ -183,13 +183,13 @@ namespace formsolve
         for (unsigned int a = 0; a < 2; ++a)
           {
             std::ostringstream what;
-            what << "the clearance between punch and die ("
-                 << die_half[a] - punch_half[a]
-                 << " mm per side) is smaller than the sheet thickness "
-                    "(Geometry/Thickness = "
-                 << t0 << " mm): the punch does not fit into the die "
-                 << "opening (Tools/Die/Diameter) with the sheet";
-            require(die_half[a] - punch_half[a] >= t0,
+            what << "the punch (half size " << punch_half[a]
+                 << " mm) does not fit into the die opening (half size "
+                 << die_half[a]
+                 << " mm): the clearance must be positive; a clearance "
+                    "below the sheet thickness (Geometry/Thickness = "
+                 << t0 << " mm) irons the wall and gets a warning";
+            require(die_half[a] - punch_half[a] > 0,
                     tools.punch.shape == ToolShape::round
                       ? "Tools/Punch/Diameter"
                       : "Tools/Punch/Length",

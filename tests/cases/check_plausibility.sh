@@ -5,7 +5,8 @@
 #   strain: Swift 829 (0.002 + eps)^0.2 -> 829 0.2^0.2 e^-0.198 = 492.9 MPa,
 #   Voce 330.2 - 190 exp(-12.4 eps) -> 259.1 MPa;
 # - lengths in metres, stresses in Pa, a holder force far from Siebel's and
-#   mu > 0.5 each get one warning naming the entry; the shipped case none.
+#   mu > 0.5, a clearance below the thickness (ironing) each get one warning
+#   naming the entry; the shipped case none.
 set -uo pipefail
 exe=$1 prm=$2
 fail=0
@@ -31,4 +32,6 @@ has holder_kN "warning: Tools/Blank holder/Force = 2.6 N is far from Siebel's es
   "$(run --set "Tools/Blank holder/Force=2.6")"
 has friction "warning: Tools/Die/Friction coefficient = 0.8 is above 0.5" \
   "$(run --set "Tools/Die/Friction coefficient=0.8")"
+has ironing "warning: the clearance between punch and die (0.6 mm per side) is smaller than the sheet thickness (0.78 mm): the cup wall will be ironed by 23 % or more" \
+  "$(run --set "Tools/Die/Diameter=41.2")"
 exit $fail
