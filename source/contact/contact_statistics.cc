@@ -2,6 +2,7 @@
 #include <formsolve/contact/contact_statistics.h>
 #include <formsolve/model/dimensions.h>
 
+#include <cmath>
 #include <limits>
 
 namespace formsolve
@@ -20,6 +21,7 @@ namespace formsolve
     {
       ContactStatistics<dim> s;
       s.tool_force.resize(tools.size());
+      s.tool_wall_force.assign(tools.size(), 0.);
       s.force_travel = tools.punch_travel();
       s.tool_max_penetration.assign(tools.size(), 0.);
       double sum_penetration = 0;
@@ -38,6 +40,8 @@ namespace formsolve
                                    dt,
                                    false);
           s.tool_force[pair.tool] -= f.force;
+          if (std::abs(pair.normal[dim - 1]) < 0.1)
+            s.tool_wall_force[pair.tool] += std::abs(f.force * pair.normal);
           ++s.n_active;
           const double p = std::max(0., -pair.predicted_gap);
           s.tool_max_penetration[pair.tool] =
@@ -50,6 +54,8 @@ namespace formsolve
       for (unsigned int t = 0; t < tools.size(); ++t)
         {
           s.tool_force[t] = Utilities::MPI::sum(s.tool_force[t], comm);
+          s.tool_wall_force[t] =
+            Utilities::MPI::sum(s.tool_wall_force[t], comm);
           s.tool_max_penetration[t] =
             Utilities::MPI::max(s.tool_max_penetration[t], comm);
           s.max_penetration =

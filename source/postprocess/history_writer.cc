@@ -46,6 +46,7 @@ namespace formsolve
                                       "force_travel"};
         for (unsigned int t = 0; t < tools.size(); ++t)
           c.push_back("force_" + tools.key(t));
+        c.push_back("ironing_force");
         if (tools.holder_index() != tools::ToolSet<dim>::none)
           c.insert(c.end(), {"holder_displacement", "holder_engaged"});
         c.insert(c.end(), {"max_penetration", "mean_penetration"});
@@ -124,6 +125,10 @@ namespace formsolve
       for (unsigned int t = 0; t < tools.size(); ++t)
         table.set("force_" + tools.key(t),
                   sym * std::abs(stats.tool_force[t][z]));
+      table.set("ironing_force",
+                sym * contact::ironing_force(stats,
+                                             tools.punch_index(),
+                                             tools.die_index()));
       if (tools.holder_index() != tools::ToolSet<dim>::none)
         {
           table.set("holder_displacement",

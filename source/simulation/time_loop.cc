@@ -314,6 +314,27 @@ namespace formsolve
     }
 
     template <int dim>
+    void TimeLoop<dim>::note_ironing(const contact::ContactStatistics<dim> &s,
+                                     const double punch_force,
+                                     RunSummary  &summary)
+    {
+      const double f = prm.geometry.symmetry_factor() *
+                       contact::ironing_force(s,
+                                              state.tools.punch_index(),
+                                              state.tools.die_index());
+      if (f <= 0.005 * std::abs(punch_force))
+        return;
+      summary.max_ironing_force = std::max(summary.max_ironing_force, f);
+      if (summary.ironing_travel >= 0)
+        return;
+      summary.ironing_travel = s.force_travel;
+      pcout << "note: the wall is ironed, squeezed between punch and die "
+               "with "
+            << f << " N from punch travel " << s.force_travel
+            << " mm (history.csv: ironing_force)" << std::endl;
+    }
+
+    template <int dim>
     bool TimeLoop<dim>::record_step(const solver::StepReport &report,
                                     RunSummary               &summary)
     {
@@ -340,6 +361,7 @@ namespace formsolve
         }
       summary.max_penetration =
         std::max(summary.max_penetration, stats.max_penetration);
+      note_ironing(stats, force, summary);
       const bool fractured = check_fracture(forming, summary);
       progress.record(wall, travel);
       pcout << "step " << std::setw(4) << state.step << "  t=" << std::fixed

@@ -66,6 +66,8 @@ namespace formsolve
         {"summary.peak_punch_force", exact_text(s.peak_punch_force)},
         {"summary.peak_force_travel", exact_text(s.peak_force_travel)},
         {"summary.max_penetration", exact_text(s.max_penetration)},
+        {"summary.ironing_travel", exact_text(s.ironing_travel)},
+        {"summary.max_ironing_force", exact_text(s.max_ironing_force)},
         {"summary.critical_stroke", exact_text(s.critical_stroke)},
         {"summary.fracture_location", s.fracture_location},
         {"summary.local.stroke", exact_text(s.local.stroke)},
@@ -107,6 +109,10 @@ namespace formsolve
       s.peak_punch_force        = std::stod(m.at("summary.peak_punch_force"));
       s.peak_force_travel       = std::stod(m.at("summary.peak_force_travel"));
       s.max_penetration         = std::stod(m.at("summary.max_penetration"));
+      s.ironing_travel          = m.count("summary.ironing_travel")
+                                    ? optional("summary.ironing_travel")
+                                    : -1.;
+      s.max_ironing_force       = optional("summary.max_ironing_force");
       s.critical_stroke         = std::stod(m.at("summary.critical_stroke"));
       s.fracture_location       = m.at("summary.fracture_location");
       for (auto &[w, name] :

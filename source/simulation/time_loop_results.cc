@@ -205,7 +205,9 @@ namespace formsolve
           for (const double a : earing.ear_angles)
             f << ' ' << a;
         }
-      f << "\nblank_holder_force = " << prm.tools.holder_force;
+      f << "\nblank_holder_force = " << prm.tools.holder_force
+        << "\nironing_travel = " << summary.ironing_travel
+        << "\nmax_ironing_force = " << summary.max_ironing_force;
       const auto warnings = parameters::plausibility_warnings(prm);
       f << "\nwarnings = " << warnings.size();
       for (std::size_t k = 0; k < warnings.size(); ++k)

@@ -6,6 +6,7 @@
 #include <formsolve/contact/contact_set.h>
 #include <formsolve/tools/tool_set.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace formsolve
@@ -17,6 +18,9 @@ namespace formsolve
     {
       /// Force of the sheet on each tool (N), modelled part.
       std::vector<Tensor<1, dim>> tool_force;
+      /// Normal force on each tool's side walls (pairs whose normal is
+      /// within 6 degrees of horizontal, |n_z| < 0.1), N, modelled part.
+      std::vector<double> tool_wall_force;
       /// Punch travel (mm) of the configuration the forces act on: the
       /// start of the step, on which the velocities were solved.
       double              force_travel = 0;
@@ -33,6 +37,19 @@ namespace formsolve
     /// Forces from the contact law with factors @p epsilon (one per pair)
     /// and friction regularisation @p v0, and penetration statistics of the
     /// predicted (end-of-step) gaps.
+    /// The force squeezing the sheet wall between punch and die (N,
+    /// modelled part): the smaller of the two tools' wall forces, 0 unless
+    /// both press on the wall, i.e. the wall is ironed.
+    template <int dim>
+    double ironing_force(const ContactStatistics<dim> &s,
+                         const unsigned int            punch,
+                         const unsigned int            die)
+    {
+      return die < s.tool_wall_force.size()
+               ? std::min(s.tool_wall_force[punch], s.tool_wall_force[die])
+               : 0.;
+    }
+
     template <int dim>
     ContactStatistics<dim> statistics(const tools::ToolSet<dim> &tools,
                                       const ContactSet<dim>     &set,

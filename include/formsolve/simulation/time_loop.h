@@ -63,6 +63,10 @@ namespace formsolve
       double peak_punch_force         = 0; // N, full part
       double peak_force_travel        = 0; // mm
       double max_penetration          = 0; // mm, over the run
+      /// Ironing: the punch travel (mm) at which the wall was first
+      /// squeezed between punch and die with more than 0.5 % of the punch
+      /// force (-1: never), and the largest such force (N, full part).
+      double ironing_travel = -1, max_ironing_force = 0;
       /// Punch travel at which the deciding fracture criterion first reached
       /// 1 by Material/Fracture measure (interpolated between steps), -1 if
       /// it did not.
@@ -110,6 +114,11 @@ namespace formsolve
       /// The converged step: state update, history.csv, the screen line.
       /// Whether the fracture criterion has reached 1.
       bool record_step(const solver::StepReport &report, RunSummary &summary);
+      /// Ironing's first appearance on screen, its largest force in the
+      /// summary.
+      void note_ironing(const contact::ContactStatistics<dim> &s,
+                        const double                           punch_force,
+                        RunSummary                            &summary);
       void save_checkpoint(RunSummary &summary);
       /// Last output and checkpoint, summaries, report.
       void finish(RunSummary &summary);
