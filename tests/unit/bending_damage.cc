@@ -19,7 +19,7 @@
 //   I_avg = a (1 + r)/sqrt(1 + 2r) kappa dt t / (4 b).
 // The mean stress jumps at the neutral axis; an element pressure holds it
 // exactly per layer, the projection smears it over the layers next to the
-// axis (inner-layer points off by 2.6-2.8 % with 4 layers; with 2 layers
+// axis (inner-layer points off by 2.6 % with 4 layers; with 2 layers
 // the outer fibre's I by +5.5 %: printed).
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
