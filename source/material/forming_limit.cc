@@ -42,8 +42,11 @@ namespace formsolve
       const double n   = std::min(p.hardening_exponent, 0.21);
       flc0_engineering = (23.3 + 14.13 * t) * n / 0.21 / 100.;
       std::ostringstream s;
-      s << "Keeler-Brazier, n = " << p.hardening_exponent
-        << ", t0 = " << thickness << " mm: FLC0 = " << 100 * flc0_engineering
+      s << "Keeler-Brazier, n = " << n;
+      if (n != p.hardening_exponent)
+        s << " (the hardening exponent " << p.hardening_exponent
+          << " capped at 0.21, the rule's range)";
+      s << ", t0 = " << thickness << " mm: FLC0 = " << 100 * flc0_engineering
         << " % (engineering)";
       origin = s.str();
     }

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <climits>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -174,6 +175,13 @@ namespace formsolve
         << "\nmax_penetration = " << summary.max_penetration
         << "\nmin_thickness = " << sh.min_thickness
         << "\nmin_thickness_R0 = " << sh.min_thickness_radius
+        << "\nmin_thickness_location = " << sh.min_thickness_location
+        << (dim == 3
+              ? "\nmin_thickness_angle = " +
+                  std::to_string(std::atan2(sh.min_thickness_location[1],
+                                            sh.min_thickness_location[0]) *
+                                 180 / M_PI)
+              : std::string())
         << "\nmax_thinning_percent = " << sh.max_thinning
         << "\nyield_criterion = " << prm.material.anisotropy.describe() << "\n"
         << material.hill().summary()
