@@ -8,7 +8,9 @@ doc/earing-sections.png (thickness along the 0, 45 and 90 degree sections).
 
 Usage: earing_report.py [--force]; runs are kept in results/earing/ and
 reused unless --force."""
-import argparse, csv, math, os, re, subprocess
+import argparse, csv, os, re, subprocess
+
+import forming_results as fr
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXE = os.path.join(ROOT, "build", "formsolve")
@@ -128,13 +130,7 @@ def write(results):
     axes[0].set_ylabel("thickness (mm)")
     fig.tight_layout()
     fig.savefig(os.path.join(DOC, "earing-sections.png"), dpi=110)
-    path = os.path.join(DOC, "forming-results.md")
-    text = open(path).read()
-    table = "\n".join(lines)
-    text = re.sub(r"<!-- earing:begin -->.*<!-- earing:end -->",
-                  "<!-- earing:begin -->\n" + table + "\n<!-- earing:end -->", text, flags=re.S)
-    open(path, "w").write(text)
-    print(table)
+    fr.write_block("earing", lines)
 
 
 def main():

@@ -184,11 +184,17 @@ def write(pred, found):
         ax.legend()
         fig.tight_layout()
         fig.savefig(os.path.join(DOC, "forming-results-ldr.png"), dpi=120)
+    write_block("forming", lines)
+
+
+def write_block(marker, lines):
+    """Replace what stands between <!-- marker:begin --> and <!-- marker:end -->
+    in doc/forming-results.md by @lines, and print them."""
     path = os.path.join(DOC, "forming-results.md")
-    text = open(path).read() if os.path.exists(path) else "<!-- forming:begin -->\n<!-- forming:end -->\n"
+    text = open(path).read() if os.path.exists(path) else f"<!-- {marker}:begin -->\n<!-- {marker}:end -->\n"
     table = "\n".join(lines)
-    text = re.sub(r"<!-- forming:begin -->.*<!-- forming:end -->",
-                  "<!-- forming:begin -->\n" + table + "\n<!-- forming:end -->", text, flags=re.S)
+    text = re.sub(rf"<!-- {marker}:begin -->.*<!-- {marker}:end -->",
+                  lambda _: f"<!-- {marker}:begin -->\n{table}\n<!-- {marker}:end -->", text, flags=re.S)
     open(path, "w").write(text)
     print(table)
 

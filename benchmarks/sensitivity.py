@@ -12,7 +12,7 @@ the margin to fracture of the cups that draw through).
 
 Usage: sensitivity.py [--jobs N] [--force]; runs are kept in
 results/forming/ and reused unless --force."""
-import argparse, csv, os, re
+import argparse, csv, os
 from concurrent.futures import ThreadPoolExecutor
 
 import forming_results as fr
@@ -132,13 +132,7 @@ def write(results):
             lines.append(f"| {label} | {pa:.3f} | {pa - base:+.3f} | {fr.fmt(ct) if ct else 'none'} | {pl:.3f} | "
                          f"{fr.fmt(cl) if cl else 'none'} | {fr.fmt(float(s.get('peak_punch_force', 'nan')) / 1000)} | {end} |")
         lines += ["", f"![sensitivity {m} d{d0} rp{rp}]({chart(case, rows)})", ""]
-    path = os.path.join(fr.DOC, "forming-results.md")
-    text = open(path).read()
-    table = "\n".join(lines)
-    text = re.sub(r"<!-- sensitivity:begin -->.*<!-- sensitivity:end -->",
-                  "<!-- sensitivity:begin -->\n" + table + "\n<!-- sensitivity:end -->", text, flags=re.S)
-    open(path, "w").write(text)
-    print(table)
+    fr.write_block("sensitivity", lines)
 
 
 def main():

@@ -168,14 +168,7 @@ namespace formsolve
 
       for (const auto &[path, value] : cl.overrides)
         {
-          std::vector<std::string> parts;
-          std::string::size_type   start = 0, slash;
-          while ((slash = path.find('/', start)) != std::string::npos)
-            {
-              parts.push_back(path.substr(start, slash - start));
-              start = slash + 1;
-            }
-          const std::string entry = path.substr(start);
+          const auto [parts, entry] = split_path(path);
           check_override(tree, path, value);
           try
             {

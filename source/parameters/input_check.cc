@@ -139,6 +139,19 @@ namespace formsolve
       }
     } // namespace
 
+    std::pair<std::vector<std::string>, std::string>
+    split_path(const std::string &path)
+    {
+      std::vector<std::string> parts;
+      std::string::size_type   start = 0, slash;
+      while ((slash = path.find('/', start)) != std::string::npos)
+        {
+          parts.push_back(path.substr(start, slash - start));
+          start = slash + 1;
+        }
+      return {parts, path.substr(start)};
+    }
+
     std::string closest_names(const std::string              &word,
                               const std::vector<std::string> &names)
     {
@@ -236,15 +249,8 @@ namespace formsolve
                         const std::string     &path_text,
                         const std::string     &value)
     {
-      const std::string where = "--set \"" + path_text + "=" + value + "\"";
-      std::vector<std::string> parts;
-      std::string::size_type   start = 0, slash;
-      while ((slash = path_text.find('/', start)) != std::string::npos)
-        {
-          parts.push_back(path_text.substr(start, slash - start));
-          start = slash + 1;
-        }
-      const std::string        entry = path_text.substr(start);
+      const std::string where   = "--set \"" + path_text + "=" + value + "\"";
+      const auto [parts, entry] = split_path(path_text);
       std::vector<std::string> path;
       for (const auto &p : parts)
         {

@@ -7,6 +7,7 @@
 #include <formsolve/parameters/declared.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace formsolve
@@ -30,6 +31,10 @@ namespace formsolve
     void check_override(const DeclaredSection &declared,
                         const std::string     &path,
                         const std::string     &value);
+
+    /// "Sub/Sub/Entry" -> ({"Sub", "Sub"}, "Entry").
+    std::pair<std::vector<std::string>, std::string>
+    split_path(const std::string &path);
 
     /// The declared names closest to @p word (edit distance, ignoring
     /// case), as "`a`" or "`a` or `b`"; empty if none is close.
