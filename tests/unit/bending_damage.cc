@@ -128,7 +128,7 @@ namespace
                                          &damage);
     update.advance(strip.state.dof_handler,
                    strip.state.reference_mapping,
-                   strip.ghost,
+                   strip.state.velocity_ghost,
                    step,
                    strip.state.history);
     const Errors                           e = local_errors(strip, r);

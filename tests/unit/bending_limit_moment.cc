@@ -43,8 +43,8 @@ namespace
         {
           kf.reinit(cell);
           kr.reinit(cell);
-          kf.rates(strip.ghost, D);
-          kr.rates(strip.ghost, Dr);
+          kf.rates(strip.state.velocity_ghost, D);
+          kr.rates(strip.state.velocity_ghost, Dr);
           const auto h = s.history.get_data(cell);
           for (unsigned int q = 0; q < kf.n_points(); ++q)
             power += strip.material.evaluate(D[q], h[q]->strain, dt, false)

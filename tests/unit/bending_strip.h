@@ -4,21 +4,10 @@
 // strain); v_z = 0 at the ends' mid-plane removes the rigid z motion. The
 // exact flow is uniform along x: rate of curvature 2 omega/L, sigma_z = 0.
 // One Newton solve on a formsolve State (the library's mesh, assembler and
-// history).
+// history; state_problem.h).
 #pragma once
 
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
-
-#include <formsolve/parameters/parameters.h>
-#include <formsolve/solver/assembler.h>
-#include <formsolve/solver/mumps_solver.h>
-#include <formsolve/solver/newton_solver.h>
-#include <formsolve/state/state.h>
-
-#include "check.h"
-#include "toy_problem.h"
+#include "state_problem.h"
 
 namespace test
 {
@@ -45,95 +34,38 @@ namespace test
     return prm;
   }
 
-  class BendingStrip : public ToyProblem
+  class BendingStrip : public StateProblem
   {
   public:
     BendingStrip(const StripSize            &size,
                  const parameters::Mesh     &mesh,
                  const parameters::Material &material_prm,
                  const double                dt)
-        : size(size)
-        , dt(dt)
+        : StateProblem(sheet, body, dt, true)
+        , size(size)
         , prm(bending_run(size, mesh, material_prm))
         , material(prm.material)
-        , state(prm, MPI_COMM_WORLD)
-        , assembler(material,
-                    state.kinematics,
-                    state.reference_mapping,
-                    mesh.degree)
-        , linear(parameters::LinearSolver(), true)
+        , sheet(prm, MPI_COMM_WORLD)
+        , body(material, sheet.kinematics, sheet.reference_mapping, mesh.degree)
     {
-      state.create_mesh();
+      sheet.create_mesh();
       make_constraints(bc, true);
       make_constraints(homogeneous, false);
-      DynamicSparsityPattern dsp(state.relevant);
-      DoFTools::make_sparsity_pattern(state.dof_handler,
-                                      dsp,
-                                      homogeneous,
-                                      false);
-      SparsityTools::distribute_sparsity_pattern(dsp,
-                                                 state.owned,
-                                                 MPI_COMM_WORLD,
-                                                 state.relevant);
-      matrix.reinit(state.owned, state.owned, dsp, MPI_COMM_WORLD);
-      residual.reinit(state.owned, MPI_COMM_WORLD);
-      ghost.reinit(state.owned, state.relevant, MPI_COMM_WORLD);
+      setup_system();
     }
 
-    /// Newton from the end rotation alone; the solution stays in ghost().
-    void solve_flow()
-    {
-      VectorType v(state.owned, MPI_COMM_WORLD);
-      bc.distribute(v);
-      parameters::NonlinearSolver p;
-      p.residual_tolerance    = 1e-9;
-      p.correction_tolerance  = 1e-9;
-      p.max_line_search_steps = 8;
-      const auto report =
-        solve_from(solver::NewtonSolver(p,
-                                        ConditionalOStream(std::cout, false)),
-                   v);
-      close("Newton converged", report.converged, 1, 0);
-      ghost = v;
-    }
+    /// Newton from the end rotation alone.
+    void solve_flow() { solve_velocity(1e-9); }
 
-    double assemble(const VectorType &v, const bool newton) override
-    {
-      ghost = v;
-      scale = assembler.assemble_body(state.dof_handler,
-                                      state.reference_mapping,
-                                      homogeneous,
-                                      ghost,
-                                      state.history,
-                                      dt,
-                                      newton,
-                                      &matrix,
-                                      residual);
-      return residual.l2_norm();
-    }
-    double force_scale() const override { return scale; }
-    double directional_derivative(const VectorType &w) const override
-    {
-      return residual * w;
-    }
-    unsigned int linear_solve(VectorType &dv) override
-    {
-      VectorType rhs(residual);
-      rhs *= -1.;
-      const auto its = linear.solve(matrix, dv, rhs);
-      homogeneous.distribute(dv);
-      return its;
-    }
-
+    using StateProblem::state;
     const StripSize                   size;
-    const double                      dt;
     const parameters::Run             prm;
     const material::RigidViscoplastic material;
-    state::State<3>                   state;
-    const solver::Assembler<3>        assembler;
-    VectorType                        ghost; // the velocity (mm/s)
 
   private:
+    state::State<3>            sheet;
+    const solver::Assembler<3> body;
+
     void make_constraints(AffineConstraints<double> &c, const bool values)
     {
       const auto                                 &dh = state.dof_handler;
@@ -172,11 +104,5 @@ namespace test
           }
       c.close();
     }
-
-    AffineConstraints<double> bc, homogeneous;
-    solver::MatrixType        matrix;
-    VectorType                residual;
-    solver::MumpsSolver       linear;
-    double                    scale = 0;
   };
 } // namespace test

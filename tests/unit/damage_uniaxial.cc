@@ -15,7 +15,7 @@
 #include <formsolve/state/state.h>
 
 #include "check.h"
-#include "toy_problem.h"
+#include "state_problem.h"
 
 using namespace dealii;
 using namespace formsolve;
@@ -24,16 +24,14 @@ namespace
 {
   const double h = 2, V = 0.2, dt = 0.25; // height (mm), end speed (mm/s)
 
-  class Tension : public test::ToyProblem
+  class Tension : public test::StateProblem
   {
   public:
     Tension(state::State<3>               &state,
             const solver::Assembler<3>    &assembler,
             const state::HistoryUpdate<3> &update)
-        : state(state)
-        , assembler(assembler)
+        : StateProblem(state, assembler, dt, false)
         , update(update)
-        , linear(parameters::LinearSolver(), false)
     {
       // The state's constraints (symmetry planes x = 0, y = 0) plus v_z = 0
       // at z = 0 and v_z = V at z = h.
@@ -67,71 +65,17 @@ namespace
           }
       bc.close();
       homogeneous.close();
-      DynamicSparsityPattern dsp(state.relevant);
-      DoFTools::make_sparsity_pattern(state.dof_handler,
-                                      dsp,
-                                      homogeneous,
-                                      false);
-      SparsityTools::distribute_sparsity_pattern(dsp,
-                                                 state.owned,
-                                                 state.comm,
-                                                 state.relevant);
-      matrix.reinit(state.owned, state.owned, dsp, state.comm);
-      residual.reinit(state.owned, state.comm);
+      setup_system();
     }
 
     void step()
     {
-      bc.distribute(state.velocity);
-      parameters::NonlinearSolver p;
-      p.residual_tolerance    = 1e-11;
-      p.correction_tolerance  = 1e-11;
-      p.max_line_search_steps = 8;
-      const auto r =
-        solve_from(solver::NewtonSolver(p,
-                                        ConditionalOStream(std::cout, false)),
-                   state.velocity);
-      test::close("Newton converged", r.converged, 1, 0);
+      solve_velocity(1e-11);
       state.advance(dt, update);
     }
 
-    double assemble(const VectorType &v, const bool newton) override
-    {
-      state.velocity_ghost = v;
-      scale                = assembler.assemble_body(state.dof_handler,
-                                      *state.mapping,
-                                      homogeneous,
-                                      state.velocity_ghost,
-                                      state.history,
-                                      dt,
-                                      newton,
-                                      &matrix,
-                                      residual);
-      return residual.l2_norm();
-    }
-    double force_scale() const override { return scale; }
-    double directional_derivative(const VectorType &dv) const override
-    {
-      return residual * dv;
-    }
-    unsigned int linear_solve(VectorType &dv) override
-    {
-      VectorType rhs(residual);
-      rhs *= -1.;
-      const auto its = linear.solve(matrix, dv, rhs);
-      homogeneous.distribute(dv);
-      return its;
-    }
-
   private:
-    state::State<3>               &state;
-    const solver::Assembler<3>    &assembler;
     const state::HistoryUpdate<3> &update;
-    AffineConstraints<double>      bc, homogeneous;
-    solver::MatrixType             matrix;
-    solver::VectorType             residual;
-    solver::MumpsSolver            linear;
-    double                         scale = 0;
   };
 } // namespace
 

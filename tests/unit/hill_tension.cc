@@ -29,7 +29,7 @@
 #include <formsolve/state/state.h>
 
 #include "check.h"
-#include "toy_problem.h"
+#include "state_problem.h"
 
 #include <cmath>
 #include <set>
@@ -41,15 +41,13 @@ namespace
 {
   const double L = 4, W = 2, T = 1, V = 0.04, dt = 0.5; // mm, mm/s, s
 
-  class Tension : public test::ToyProblem
+  class Tension : public test::StateProblem
   {
   public:
     Tension(state::State<3>            &state,
             const solver::Assembler<3> &assembler,
             const bool                  plane_strain)
-        : state(state)
-        , assembler(assembler)
-        , linear(parameters::LinearSolver(), false)
+        : StateProblem(state, assembler, dt, false)
     {
       // v_x = 0 at x = -L/2 and V at x = L/2; v_y = v_z = 0 at the corner
       // (-L/2, -W/2, 0) and v_z = 0 at (-L/2, W/2, 0) (no rigid motion);
@@ -97,33 +95,10 @@ namespace
           }
       bc.close();
       homogeneous.close();
-      DynamicSparsityPattern dsp(state.relevant);
-      DoFTools::make_sparsity_pattern(state.dof_handler,
-                                      dsp,
-                                      homogeneous,
-                                      false);
-      SparsityTools::distribute_sparsity_pattern(dsp,
-                                                 state.owned,
-                                                 state.comm,
-                                                 state.relevant);
-      matrix.reinit(state.owned, state.owned, dsp, state.comm);
-      residual.reinit(state.owned, state.comm);
+      setup_system();
     }
 
-    void solve_flow()
-    {
-      bc.distribute(state.velocity);
-      parameters::NonlinearSolver p;
-      p.residual_tolerance    = 1e-11;
-      p.correction_tolerance  = 1e-11;
-      p.max_line_search_steps = 8;
-      const auto r =
-        solve_from(solver::NewtonSolver(p,
-                                        ConditionalOStream(std::cout, false)),
-                   state.velocity);
-      test::close("Newton converged", r.converged, 1, 0);
-      state.velocity_ghost = state.velocity;
-    }
+    void solve_flow() { solve_velocity(1e-11); }
 
     /// The x force on the end x = L/2: the unconstrained residual there.
     double end_force() const
@@ -163,43 +138,6 @@ namespace
         force += r[i];
       return Utilities::MPI::sum(force, state.comm);
     }
-
-    double assemble(const VectorType &v, const bool newton) override
-    {
-      state.velocity_ghost = v;
-      scale                = assembler.assemble_body(state.dof_handler,
-                                      *state.mapping,
-                                      homogeneous,
-                                      state.velocity_ghost,
-                                      state.history,
-                                      dt,
-                                      newton,
-                                      &matrix,
-                                      residual);
-      return residual.l2_norm();
-    }
-    double force_scale() const override { return scale; }
-    double directional_derivative(const VectorType &dv) const override
-    {
-      return residual * dv;
-    }
-    unsigned int linear_solve(VectorType &dv) override
-    {
-      VectorType rhs(residual);
-      rhs *= -1.;
-      const auto its = linear.solve(matrix, dv, rhs);
-      homogeneous.distribute(dv);
-      return its;
-    }
-
-  private:
-    state::State<3>            &state;
-    const solver::Assembler<3> &assembler;
-    AffineConstraints<double>   bc, homogeneous;
-    solver::MatrixType          matrix;
-    solver::VectorType          residual;
-    solver::MumpsSolver         linear;
-    double                      scale = 0;
   };
 
   struct Measured
