@@ -43,10 +43,9 @@ namespace test
       p.residual_tolerance    = tolerance;
       p.correction_tolerance  = tolerance;
       p.max_line_search_steps = 8;
-      const auto r =
-        solve_from(solver::NewtonSolver(
-                     p, dealii::ConditionalOStream(std::cout, false)),
-                   state.velocity);
+      const auto r            = solve_from(
+        solver::NewtonSolver(p, dealii::ConditionalOStream(std::cout, false)),
+        state.velocity);
       close("Newton converged", r.converged, 1, 0);
       state.velocity_ghost = state.velocity;
     }
