@@ -69,7 +69,12 @@ namespace formsolve
                   "max_equivalent_strain"});
         const auto where = coordinates<dim>();
         c.insert(c.end(),
-                 {"min_thickness", "min_thickness_R0", "max_thinning_percent"});
+                 {"min_thickness",
+                  "min_thickness_R0",
+                  "max_thinning_percent",
+                  "max_thickening_percent",
+                  "cup_height",
+                  "flc_margin_percent"});
         for (const auto &x : where)
           c.push_back("min_thickness_" + x);
         for (const auto &d : directions<dim>())
@@ -160,6 +165,9 @@ namespace formsolve
       table.set("min_thickness", sheet.min_thickness);
       table.set("min_thickness_R0", sheet.min_thickness_radius);
       table.set("max_thinning_percent", sheet.max_thinning);
+      table.set("max_thickening_percent", sheet.max_thickening);
+      table.set("cup_height", sheet.cup_height);
+      table.set("flc_margin_percent", sheet.flc_margin);
       for (unsigned int d = 0; d < dim; ++d)
         {
           table.set("min_thickness_" + where[d],

@@ -30,7 +30,8 @@ namespace formsolve
         double         major = 0, minor = 0, damage = 0;
         unsigned int   n = 0;
       };
-      std::map<Key, Column> columns;
+      std::map<Key, Column>            columns;
+      std::vector<std::array<Key, nc>> mid_cells; // corner keys
       auto read_key = [&](const std::vector<double> &v, std::size_t &i) {
         Key k;
         for (unsigned int d = 0; d < nk; ++d)
@@ -63,6 +64,7 @@ namespace formsolve
                 for (unsigned int d = 0; d < dim; ++d)
                   p[c][d] = v[i++];
               }
+            mid_cells.push_back(k);
             const double   major = v[i++], minor = v[i++];
             Tensor<1, dim> n;
             for (unsigned int d = 0; d < dim; ++d)
@@ -120,6 +122,44 @@ namespace formsolve
           cols.push_back(s);
           keys.push_back(k);
         }
+      cell_centre_thickness(mid_cells);
+    }
+
+    template <int dim>
+    void SheetMeasures<dim>::cell_centre_thickness(
+      const std::vector<std::array<Key, n_corners>> &mid_cells)
+    {
+      // The nodal positions carry a checkerboard mode of the thickness that
+      // the volume constraint at the cell centres does not see; it is
+      // largest at the axis of the axisymmetric model, whose node the
+      // volume element 2 pi r weights by zero (doc/theory.md, section 11).
+      // Each cell's centre thickness is the mean of its corners', and a
+      // column gets the mean of its cells', at every column alike.
+      std::map<Key, std::size_t> index;
+      for (std::size_t i = 0; i < keys.size(); ++i)
+        index[keys[i]] = i;
+      std::vector<double>       sum(cols.size(), 0.);
+      std::vector<unsigned int> count(cols.size(), 0);
+      for (const auto &corners : mid_cells)
+        {
+          std::array<std::size_t, n_corners> at;
+          double                             t        = 0;
+          bool                               complete = true;
+          for (unsigned int c = 0; c < n_corners && complete; ++c)
+            {
+              const auto it = index.find(corners[c]);
+              complete      = it != index.end();
+              if (complete)
+                at[c] = it->second, t += cols[it->second].thickness;
+            }
+          if (!complete)
+            continue;
+          for (const auto i : at)
+            sum[i] += t / n_corners, ++count[i];
+        }
+      for (std::size_t i = 0; i < cols.size(); ++i)
+        if (count[i] > 0)
+          cols[i].thickness = sum[i] / count[i];
     }
 
     template <int dim>
@@ -157,7 +197,23 @@ namespace formsolve
             s.min_thickness_location = c.mid;
             found                    = true;
           }
-      s.max_thinning = 100. * (1. - s.min_thickness / t0);
+      s.max_thinning       = 100. * (1. - s.min_thickness / t0);
+      double max_thickness = 0, bottom = std::numeric_limits<double>::max(),
+             rim_top = -bottom, usage = 0;
+      for (const auto &c : cols)
+        {
+          max_thickness = std::max(max_thickness, c.thickness);
+          bottom        = std::min(bottom, c.bottom);
+          if (c.rim)
+            rim_top = std::max(rim_top, c.top);
+          // Stretched beyond the curve's own scale only: a column with no
+          // positive major strain uses none of the limit.
+          if (c.major > 0 && flc.major(c.minor) > 0)
+            usage = std::max(usage, c.major / flc.major(c.minor));
+        }
+      s.max_thickening = 100. * (max_thickness / t0 - 1.);
+      s.flc_margin     = 100. * (1. - usage);
+      s.cup_height     = rim_top - bottom;
       std::vector<const SheetColumn<dim> *> rim;
       for (const auto &c : cols)
         if (c.rim)

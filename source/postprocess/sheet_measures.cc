@@ -54,6 +54,9 @@ namespace formsolve
           packed                    = {s.min_thickness,
                                        s.min_thickness_radius,
                                        s.max_thinning,
+                                       s.max_thickening,
+                                       s.flc_margin,
+                                       s.cup_height,
                                        s.blank_radius};
           for (unsigned int d = 0; d < dim; ++d)
             packed.push_back(s.min_thickness_location[d]);
@@ -67,6 +70,9 @@ namespace formsolve
       sum.min_thickness = packed[i++];
       sum.min_thickness_radius = packed[i++];
       sum.max_thinning         = packed[i++];
+      sum.max_thickening       = packed[i++];
+      sum.flc_margin           = packed[i++];
+      sum.cup_height           = packed[i++];
       sum.blank_radius         = packed[i++];
       for (unsigned int d = 0; d < dim; ++d)
         sum.min_thickness_location[d] = packed[i++];

@@ -47,8 +47,14 @@ namespace formsolve
     {
       double             min_thickness = 0, min_thickness_radius = 0; // mm
       dealii::Point<dim> min_thickness_location;
-      double             max_thinning = 0; // % of t0
-      double             blank_radius = 0; // largest reference radius
+      double             max_thinning   = 0; // % of t0
+      double             max_thickening = 0; // % of t0, 100 (t_max/t0 - 1)
+      /// 100 (1 - the largest ratio of a column's major strain to the
+      /// FLC's at its minor strain) (%): negative past the curve.
+      double flc_margin = 100;
+      /// Lowest point of the sheet to the highest of its rim (mm).
+      double cup_height   = 0;
+      double blank_radius = 0; // largest reference radius
       /// Rim radius (current, mm) and draw-in R0 - r per direction: 0, 45,
       /// 90 degrees in 3-D (NaN outside the modelled part), one value in
       /// axisymmetry.
@@ -107,6 +113,11 @@ namespace formsolve
       void assemble_columns(const std::vector<std::vector<double>> &nodes,
                             const std::vector<std::vector<double>> &cells,
                             const std::vector<std::vector<double>> &damages);
+      /// Rank 0: every column's thickness replaced by the mean of the
+      /// centre thicknesses of the mid-surface cells at it (Q2 mid-edge
+      /// columns, at no cell corner, keep their own).
+      void cell_centre_thickness(
+        const std::vector<std::array<Key, n_corners>> &mid_cells);
       /// Rank 0: the summary of cols (marks the rim where no rim nodes
       /// exist).
       SheetSummary<dim> summarise();
