@@ -82,41 +82,6 @@ namespace formsolve
     }
 
     template <int dim>
-    void TimeLoop<dim>::write_output()
-    {
-      TimerOutput::Scope t(timer, "output");
-      // Output and checkpoints build buffers of the size of the state: free
-      // the factors first, so that they do not add to the run's peak.
-      step_solver.release_factors();
-      state.velocity_ghost = state.velocity;
-      contact_fields.fill(state,
-                          step_solver.forming_system().penalty_factors(),
-                          prm.contact.search_distance);
-      sheet.measure(state, damage);
-      auto nodal = contact_fields.scalars();
-      for (const auto &f : sheet.nodal_fields(state))
-        nodal.push_back(f);
-      const model::MaterialFrame<dim> frame(material.rolling_direction());
-      column_damage.measure(state, damage, true);
-      postprocess::OutputFields<dim> f{
-        &state.velocity_ghost,
-        &state.displacement_ghost,
-        nodal,
-        &state.history,
-        {{damage.criterion() == parameters::FractureCriterion::cockcroft_latham
-            ? "cockcroft_latham_through_thickness"
-            : "oyane_through_thickness",
-          &column_damage.cell_values()}},
-        material.isotropic() ? nullptr : &frame};
-      writer->write(state.step,
-                    state.time,
-                    state.dof_handler,
-                    *state.mapping,
-                    f);
-      last_output_step = state.step;
-    }
-
-    template <int dim>
     std::string TimeLoop<dim>::check_events()
     {
       auto              &tools  = state.tools;
@@ -389,6 +354,8 @@ namespace formsolve
       checkpoint  = std::make_unique<Checkpoint<dim>>(prm.output.directory,
                                                      parameter_listing());
       writer      = std::make_unique<postprocess::VtuWriter<dim>>(prm.output);
+      tool_writer =
+        std::make_unique<postprocess::ToolWriter<dim>>(prm.output.directory);
       start(resume, summary);
 
       progress.record(seconds(), state.tools.punch_travel());

@@ -84,7 +84,8 @@ namespace formsolve
         {"refinement_rows",
          std::to_string(refinement_log ? refinement_log->n_rows() : 0)},
         {"pvd.solution", records(writer->solution_records())},
-        {"pvd.revolved", records(writer->revolved_pvd_records())}};
+        {"pvd.revolved", records(writer->revolved_pvd_records())},
+        {"pvd.tools", records(tool_writer->pvd_records())}};
     }
 
     template <int dim>
@@ -131,6 +132,9 @@ namespace formsolve
       refinement_rows  = std::stoul(m.at("refinement_rows"));
       writer->set_records(records(m.at("pvd.solution")),
                           records(m.at("pvd.revolved")));
+      // Absent in checkpoints written before the tools were output.
+      if (m.count("pvd.tools"))
+        tool_writer->set_records(records(m.at("pvd.tools")));
     }
 
     // The class is instantiated in time_loop.cc; these members are here.

@@ -40,3 +40,29 @@ assert times == sorted(times) and times[0] == 0.0
 disp = vtk_to_numpy(grid.GetPointData().GetArray("displacement"))
 assert disp[:, 2].min() < -1.0, "the sheet did not move down with the punch"
 print("all fields present and finite")
+
+# The tools beside the sheet (tools.pvd, the same times): each tool's surface
+# where the tool is at that time. drawing.prm: t0 = 0.78 mm, the punch face
+# starts on the sheet and moves down by the travel, the die face stays at
+# z = 0, the holder face at t0 + 0.05 mm (gap control).
+import csv
+history = {round(float(r["time"]), 9): r for r in csv.DictReader(open(os.path.join(out, "history.csv")))}
+tools = ET.parse(os.path.join(out, "tools.pvd")).getroot().findall(".//DataSet")
+assert [float(ds.get("timestep")) for ds in tools] == times, "tools.pvd: not the times of solution.pvd"
+for ds in tools:
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(os.path.join(out, ds.get("file")))
+    reader.Update()
+    grid = reader.GetOutput()
+    z = vtk_to_numpy(grid.GetPoints().GetData())[:, 2]
+    tool = vtk_to_numpy(grid.GetPointData().GetArray("tool")).astype(int)
+    t = float(ds.get("timestep"))
+    travel = float(history[round(t, 9)]["punch_travel"]) if t > 0 else 0.0
+    expected = {0: ("lowest", 0.78 - travel), 1: ("highest", 0.0), 2: ("lowest", 0.83)}
+    assert set(tool) == set(expected), f"{ds.get('file')}: tools {sorted(set(tool))}"
+    for k, (which, face) in expected.items():
+        zk = z[tool == k]
+        got = zk.min() if which == "lowest" else zk.max()
+        assert abs(got - face) < 1e-4, f"{ds.get('file')}: tool {k}'s face at z = {got}, expected {face}"
+    print(f"{ds.get('file')}: {grid.GetNumberOfCells()} tool cells, punch face at z = {0.78 - travel:.3f} mm")
+print("the tools' surfaces where the tools are")

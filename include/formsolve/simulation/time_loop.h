@@ -18,6 +18,7 @@
 #include <formsolve/postprocess/sheet_measures.h>
 #include <formsolve/postprocess/statistics_table.h>
 #include <formsolve/postprocess/through_thickness.h>
+#include <formsolve/postprocess/tool_writer.h>
 #include <formsolve/postprocess/vtu_writer.h>
 #include <formsolve/refinement/mesh_refinement.h>
 #include <formsolve/simulation/checkpoint.h>
@@ -134,7 +135,11 @@ namespace formsolve
       void prepare_output_directory();
       /// Adapt the mesh; logs a row of refinement.csv. Whether it changed.
       bool adapt();
+      /// solution_<step> and tools_<step>
+      /// (source/simulation/time_loop_output.cc).
       void write_output();
+      /// How far the tools' unbounded faces and walls are drawn.
+      tools::SurfaceExtent tool_extent() const;
       /// Holder release and draw-through; the reason to end the run, or "".
       std::string check_events();
       /// Nonlinear solver/First step start = coarser mesh: the first step
@@ -170,6 +175,7 @@ namespace formsolve
       refinement::RefinementCriteria<dim>           criteria;
       std::unique_ptr<postprocess::StatisticsTable> refinement_log;
       std::unique_ptr<postprocess::VtuWriter<dim>>  writer;
+      std::unique_ptr<postprocess::ToolWriter<dim>> tool_writer;
       postprocess::ContactFields<dim>               contact_fields;
       postprocess::SheetMeasures<dim>               sheet;
       postprocess::ThroughThicknessDamage<dim>      column_damage;

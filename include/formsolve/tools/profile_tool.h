@@ -67,6 +67,9 @@ namespace formsolve
         travelled = travel;
       }
       std::string name() const override { return tool_name; }
+      /// Faces, rounded edge and wall swept along the planform's outline
+      /// (source/tools/profile_surface.cc).
+      ToolSurface<dim> surface(const SurfaceExtent &extent) const override;
 
     private:
       std::string    tool_name;

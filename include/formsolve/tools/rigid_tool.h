@@ -4,6 +4,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <formsolve/tools/tool_surface.h>
+
 #include <limits>
 #include <string>
 
@@ -69,6 +71,9 @@ namespace formsolve
                            const double          travel) = 0;
 
       virtual std::string name() const = 0;
+      /// The working surface in the tool's current position, drawn over
+      /// @p extent where the tool is unbounded.
+      virtual ToolSurface<dim> surface(const SurfaceExtent &extent) const = 0;
     };
   } // namespace tools
 } // namespace formsolve
