@@ -204,7 +204,8 @@ namespace formsolve
         << summary.through_thickness.stroke
         << "\nfracture_location_through_thickness = "
         << summary.through_thickness.location
-        << "\nforming_limit = " << sheet.forming_limit().source();
+        << "\nforming_limit = " << sheet.forming_limit().source()
+        << "\nsafety_margin = " << prm.material.safety_margin;
       if (!earing.angle.empty())
         {
           f << "\ncup_height_mean = " << earing.mean
