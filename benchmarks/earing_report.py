@@ -1,4 +1,4 @@
-"""The earing cup (../shared/reference/earing-cup.md) with both Hill48
+"""The earing cup (`doc/reference-scenes.md` (section 2)) with both Hill48
 calibrations, planar isotropy and the variants the scene asks for (holder
 force halved and doubled, the positional holder at 1.04 mm over the die,
 mu = 0.1, the Voce flow curve), quarter model on 2 ranks; written into

@@ -1,4 +1,4 @@
-"""Predictions for the reference cup (../shared/reference/cup-drawing.md),
+"""Predictions for the reference cup (`doc/reference-scenes.md` (section 1)),
 axisymmetric model, blank holder at Siebel's force, mu = 0.1, Oyane's
 criterion read through the thickness (Material/Fracture measure, the
 default; the local maximum's stroke is reported beside it), Hill's normal

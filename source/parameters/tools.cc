@@ -168,7 +168,7 @@ namespace formsolve
         "where it is once the blank rim has left it.");
       prm.declare_entry(
         "Force",
-        "2670",
+        "2671",
         Anything(),
         "Blank-holder force for Control = force (N, >= 0), for the full "
         "part (the model's share is taken by the symmetry factor); or "

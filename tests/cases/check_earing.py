@@ -1,4 +1,4 @@
-"""Earing of the quarter cup (../shared/reference/earing-cup.md), read from
+"""Earing of the quarter cup (`doc/reference-scenes.md` (section 2)), read from
 earing.csv (cup height against the angle to RD over 0-90 degrees) and
 run-summary.txt:
 - "ears": with r-based Hill and delta r = (r0 + r90 - 2 r45)/2 > 0, four ears,

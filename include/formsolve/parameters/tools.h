@@ -55,7 +55,7 @@ namespace formsolve
       double punch_speed  = 1;  // mm/s, in -z
 
       HolderControl holder_control         = HolderControl::force;
-      double        holder_force           = 2670;  // N, full part
+      double        holder_force           = 2671;  // N, full part
       bool          holder_force_by_siebel = false; // Force = siebel
 
       static void declare(ParameterHandler &prm);
