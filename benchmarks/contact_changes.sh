@@ -46,8 +46,9 @@ for name in "${runs[@]}"; do
       { tail -3 "$out/$name.log"; exit 1; }
 done
 for spec in ${LOGS:-}; do runs+=("$spec"); done
-/usr/bin/python3 - "$out" "$root/doc/contact-changes.csv" "${runs[@]}" <<'PY'
+PYTHONPATH="$root/benchmarks" /usr/bin/python3 - "$out" "$root/doc/contact-changes.csv" "${runs[@]}" <<'PY'
 import collections, csv, os, re, sys
+from run_tables import steps as read_steps
 out, csv_path, runs = sys.argv[1], sys.argv[2], sys.argv[3:]
 tools = ["punch", "die", "blank_holder"]
 rows = []
@@ -87,7 +88,7 @@ for spec in runs:
         row = dict(model=model, strategy=strategy, dofs=int(dofs.group(1)),
                    steps=len(steps),
                    iterations=sum(sum(i > 0 for i, _ in s) for s in steps))
-        history = list(csv.DictReader(open(history_path)))
+        history = read_steps(history_path)
         assert row["iterations"] == sum(int(h["newton_iterations"]) for h in history), run
         for g in range(5):
             its = groups.get(g, [])

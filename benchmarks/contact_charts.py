@@ -23,6 +23,7 @@ import subprocess
 import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
+from run_tables import steps  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # FORMSOLVE_EXE: another binary (e.g. a copy, so that a long map keeps one
@@ -113,10 +114,10 @@ def runs_condition():
 
 
 def read_history(path):
+    """history.csv with solver.csv beside it, as numbers."""
     if not os.path.exists(path):
         return []
-    with open(path) as f:
-        return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
+    return [{k: float(v) for k, v in row.items()} for row in steps(path)]
 
 
 def execute(run, force):

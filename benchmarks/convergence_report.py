@@ -10,6 +10,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from run_tables import steps  # noqa: E402
 
 results, doc, tags = sys.argv[1], sys.argv[2], sys.argv[3:]
 runs = [f"{m}-{s}" for m in ("axisymmetric", "quarter")
@@ -28,7 +29,7 @@ def summary(path):
 
 def load(tag, run):
     path = os.path.join(results, tag, run)
-    rows = list(csv.DictReader(open(os.path.join(path, "history.csv"))))
+    rows = steps(path)
     its = [int(r["newton_iterations"]) for r in rows]
     s = summary(path)
     return {

@@ -44,8 +44,9 @@ run l5-mumps-metis 1 "${l5[@]}"
 run l5-mumps-metis-2ranks 2 "${l5[@]}"
 run l5-nofriction-lu 1 "${l5[@]}" "${frictionless[@]}" "${lu[@]}"
 run l5-nofriction-ldlt 1 "${l5[@]}" "${frictionless[@]}"
-/usr/bin/python3 - "$out" "$root/doc/direct-solver.csv" "${runs[@]}" <<'PY'
+PYTHONPATH="$root/benchmarks" /usr/bin/python3 - "$out" "$root/doc/direct-solver.csv" "${runs[@]}" <<'PY'
 import csv, re, sys
+from run_tables import steps
 out, csv_path = sys.argv[1:3]
 rows = []
 def section(log, name):
@@ -61,7 +62,7 @@ for item in sys.argv[3:]:
     nf, tf = section(log, "linear solve: factorisation")
     ns, ts = section(log, "linear solve: substitution")
     _, tl = section(log, "linear solve")
-    h = list(csv.DictReader(open(f"{out}/{name}/history.csv")))
+    h = steps(f"{out}/{name}")
     dofs = float(s["dofs"])
     mem = float(s.get("factorisation_memory_mb", 0))
     rows.append(dict(run=name, ranks=ranks, dofs=s["dofs"], steps=s["steps"], newton=s["newton_iterations"],

@@ -43,6 +43,7 @@ for model in axisymmetric quarter; do
 done
 PYTHONPATH="$root/benchmarks" /usr/bin/python3 - "$out" "$root/doc/factor-update.csv" <<'PY'
 import csv, sys
+from run_tables import steps
 from run_tables import summary, write
 out, csv_path = sys.argv[1:3]
 rows = []
@@ -51,7 +52,7 @@ for model in ["axisymmetric", "quarter"]:
                          ("adaptive-strict", "1"), ("adaptive", "0.25")]:
         for update in ["iteration", "iteration and predictor", "step"]:
             run = f"{out}/{model}-{strategy}-{dt}-{update.replace(' ', '-')}"
-            h = list(csv.DictReader(open(f"{run}/history.csv")))
+            h = steps(f"{run}")
             s = summary(run)
             newton = [int(r["newton_iterations"]) for r in h]
             rows.append(dict(model=model, strategy=strategy, dt=dt, update=update,

@@ -41,15 +41,16 @@ run l5-reuse20-1e-10 "${big[@]}" "${r20[@]}"
 run l5-reuse8-1e-6 "${big[@]}" "${r8[@]}"
 run l3-strict-fresh "${small[@]}"
 run l3-strict-reuse20-1e-10 "${small[@]}" "${r20[@]}"
-/usr/bin/python3 - "$out" "$root/doc/factorisation-reuse.csv" <<'PY'
+PYTHONPATH="$root/benchmarks" /usr/bin/python3 - "$out" "$root/doc/factorisation-reuse.csv" <<'PY'
 import csv, os, re, sys
+from run_tables import steps
 out, csv_path = sys.argv[1:3]
 rows = []
 for name in ("l5-fresh", "l5-reuse20-1e-10", "l5-reuse8-1e-6", "l3-strict-fresh", "l3-strict-reuse20-1e-10"):
     s = dict(l.rstrip("\n").split(" = ", 1) for l in open(f"{out}/{name}/run-summary.txt") if " = " in l)
     log = open(f"{out}/{name}.log").read()
     lin = float(re.search(r"\| linear solve\s+\|\s+\d+ \|\s+([\d.]+)s", log).group(1))
-    h = list(csv.DictReader(open(f"{out}/{name}/history.csv")))
+    h = steps(f"{out}/{name}")
     rows.append(dict(run=name, dofs=s["dofs"], steps=s["steps"], newton=s["newton_iterations"],
                      linear_iterations=s["linear_iterations"], factorisations=s["factorisations"],
                      linear_solve_s=f"{lin:.1f}", wall_s=f"{float(s['wall_time']):.1f}", memory_MB=f"{float(s['peak_memory_kb_all_ranks']) / 1024:.0f}",

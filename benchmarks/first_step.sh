@@ -44,9 +44,10 @@ run() { # model planform layers strategy setting sets...
   # 0.5 mm of stroke (one step at 0.5 s, more at shorter ones); step 1 is read.
   (cd "$root/prm" && "$exe" cup-drawing.prm "${sets[@]}" --set "Tools/Punch/Stroke=0.5" "$@") \
     > "$tmp/log" 2>&1 || { tail -3 "$tmp/log"; exit 1; }
-  /usr/bin/python3 - "$tmp/run" "$model,$pf,$layers,$strategy,$setting" >> "$csv" <<'EOF'
+  PYTHONPATH="$root/benchmarks" /usr/bin/python3 - "$tmp/run" "$model,$pf,$layers,$strategy,$setting" >> "$csv" <<'EOF'
 import csv, sys
-row = next(csv.DictReader(open(sys.argv[1] + "/history.csv")))
+from run_tables import steps
+row = steps(sys.argv[1])[0]
 summary = dict(l.split(" = ", 1) for l in open(sys.argv[1] + "/run-summary.txt").read().splitlines()
                if " = " in l)
 print(f"{sys.argv[2]},{row['newton_iterations']},{row['cutbacks']},"

@@ -43,6 +43,7 @@ for tolerance in 0 1e-8 1e-6; do
 done
 PYTHONPATH="$root/benchmarks" /usr/bin/python3 - "$out" "$root/doc/low-rank.csv" "${runs[@]}" <<'PY'
 import csv, sys
+from run_tables import steps
 from run_tables import section, summary, write
 out, csv_path = sys.argv[1:3]
 rows = []
@@ -64,6 +65,6 @@ for item in sys.argv[3:]:
                      linear_s_per_newton=tl / newton,
                      s_per_newton=float(s["newton_wall_time"]) / newton,
                      peak_memory_MB=float(s["peak_memory_kb_all_ranks"]) / 1024,
-                     final_force_kN=float(list(csv.DictReader(open(f"{out}/{name}/history.csv")))[-1]["punch_force"]) / 1e3))
+                     final_force_kN=float(steps(f"{out}/{name}")[-1]["punch_force"]) / 1e3))
 write(rows, csv_path, 6, 4)
 PY

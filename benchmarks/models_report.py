@@ -22,6 +22,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
+from run_tables import steps  # noqa: E402
 
 results, doc = sys.argv[1], sys.argv[2]
 T0 = 0.78  # Geometry/Thickness of the default cup (mm)
@@ -41,7 +42,7 @@ def summary(run):
 
 
 def history(run):
-    return list(csv.DictReader(open(os.path.join(results, run, "history.csv"))))
+    return steps(os.path.join(results, run))
 
 
 def section(vtu):

@@ -10,6 +10,7 @@ import matplotlib.pyplot as plt
 from matplotlib.collections import PolyCollection
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
+from run_tables import steps  # noqa: E402
 
 res, doc = sys.argv[1], sys.argv[2]
 names = [n for n in ["uniform-3", "uniform-4", "uniform-5", "adaptive", "adaptive-3-4layers", "adaptive-4-2layers"]
@@ -25,7 +26,7 @@ def summary(name):
 
 
 def history(name):
-    return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(os.path.join(res, name, "history.csv")))]
+    return [{k: float(v) for k, v in r.items()} for r in steps(os.path.join(res, name))]
 
 
 def grid(name, step=None):

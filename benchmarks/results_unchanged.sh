@@ -48,15 +48,16 @@ for case in ${CASES:-cup-drawing cup-drawing-3d}; do
     done
   done
 done
-/usr/bin/python3 - "$out" "$root/doc/results-unchanged.csv" "${names[@]}" <<'PY'
+PYTHONPATH="$root/benchmarks" /usr/bin/python3 - "$out" "$root/doc/results-unchanged.csv" "${names[@]}" <<'PY'
 import csv, re, sys
+from run_tables import steps
 out, path = sys.argv[1:3]
 skip = re.compile(r"_[xyz]$|iterations|strict_passes|condition|locked_pairs|wall")
 physics = re.compile(r"^(punch_force|force_die|force_blank_holder|volume|max_equivalent_strain|"
                      r"min_thickness|max_oyane|rim_radius.*)$")
 
 def history(name):
-    return list(csv.DictReader(open(f"{out}/{name}/history.csv")))
+    return steps(f"{out}/{name}")
 
 def summary(name):
     return dict(l.rstrip("\n").split(" = ", 1) for l in open(f"{out}/{name}/run-summary.txt") if " = " in l)

@@ -1,7 +1,14 @@
 """Shared by the benchmark scripts: read a run's run-summary.txt and the timer
 table of its log, write rows as CSV and print them as a Markdown table."""
 import csv
+import os
 import re
+import sys
+
+# history.csv and solver.csv of a run merged, one dict per step (the tests'
+# reader: tests/cases/results.py).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "cases"))
+from results import read as steps  # noqa: E402
 
 
 def summary(run_dir):

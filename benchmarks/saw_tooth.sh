@@ -23,14 +23,15 @@ for level in 1 2; do
   run "r5-die$level" --set "Mesh refinement/Interval=4" --set "Mesh refinement/Die level=$level" \
       --set "Mesh refinement/Band width=2"
 done
-/usr/bin/python3 - "$out" <<'PY'
+PYTHONPATH="$root/benchmarks" /usr/bin/python3 - "$out" <<'PY'
 import csv, os, sys
+from run_tables import steps
 import numpy as np
 out = sys.argv[1]
 print("| run | RMS oscillation (% of the mean force, free draw) | peak force (N) |")
 print("|---|---|---|")
 for name in sorted(d for d in os.listdir(out) if os.path.isdir(os.path.join(out, d))):
-    rows = list(csv.DictReader(open(os.path.join(out, name, "history.csv"))))
+    rows = steps(os.path.join(out, name))
     s = np.array([float(r["punch_travel"]) for r in rows]); f = np.array([float(r["punch_force"]) for r in rows])
     free = [i for i, r in enumerate(rows) if float(r["holder_engaged"]) == 0][0]
     w = (s > s[free] + 1) & (s < s[-1] - 2.5)

@@ -1,12 +1,13 @@
 """Table of run-summary.txt and history.csv of benchmark runs (Markdown)."""
 import csv, sys
+from run_tables import steps  # noqa: E402
 
 out, levels = sys.argv[1], sys.argv[2:]
 rows = []
 for l in levels:
     s = dict(line.split(" = ") for line in open(f"{out}/level-{l}/run-summary.txt").read().splitlines())
     s = {k: float(v) for k, v in s.items()}
-    h = list(csv.DictReader(open(f"{out}/level-{l}/history.csv")))
+    h = steps(f"{out}/level-{l}")
     rows.append((l, s, h))
 print("| planform refinements | DoFs | ranks | steps | Newton it./step | linear it./solve | wall time (s) | µs per Newton it. per DoF | peak memory, all ranks (MB) | kB per DoF | peak punch force (kN) | max penetration (mm) |")
 print("|---|---|---|---|---|---|---|---|---|---|---|---|")

@@ -41,6 +41,7 @@ for model in axisymmetric quarter; do
 done
 PYTHONPATH="$root/benchmarks" /usr/bin/python3 - "$out" "$root/doc/tolerance.csv" <<'PY'
 import csv, sys
+from run_tables import steps
 from run_tables import summary, write
 out, csv_path = sys.argv[1:3]
 columns = ["punch_force", "holder_displacement", "max_penetration", "min_thickness",
@@ -48,10 +49,10 @@ columns = ["punch_force", "holder_displacement", "max_penetration", "min_thickne
 rows = []
 for model in ["axisymmetric", "quarter"]:
     for strategy in ["fixed", "adaptive", "adaptive-strict"]:
-        ref = list(csv.DictReader(open(f"{out}/{model}-{strategy}-1e-8/history.csv")))
+        ref = steps(f"{out}/{model}-{strategy}-1e-8")
         for tol in ["1e-8", "1e-6", "1e-5", "1e-4"]:
             run = f"{out}/{model}-{strategy}-{tol}"
-            got = list(csv.DictReader(open(f"{run}/history.csv")))
+            got = steps(f"{run}")
             s = summary(run)
             row = dict(model=model, strategy=strategy, tolerance=tol, steps=int(s["steps"]),
                        newton=int(s["newton_iterations"]),

@@ -143,7 +143,7 @@ namespace formsolve
         Integer(0),
         "adaptive-strict and augmented-lagrangian: re-solves of "
         "one step at most; a step still deeper than allowed "
-        "after them is kept and reported in history.csv.");
+        "after them is kept and reported in solver.csv (pairs_over_allowed).");
       prm.declare_entry(
         "Strict check residual",
         "0.1",

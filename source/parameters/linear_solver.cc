@@ -38,7 +38,7 @@ namespace formsolve
         Integer(0),
         "Diagnostics: after every linear solve, this many unpreconditioned "
         "CG iterations on the system matrix give a Lanczos estimate of its "
-        "condition number (history.csv column condition_estimate; a lower "
+        "condition number (solver.csv column condition_estimate; a lower "
         "bound, meaningful for symmetric systems, i.e. without friction). "
         "0: off.");
       prm.leave_subsection();

@@ -25,7 +25,7 @@ namespace formsolve
         "Wall time in history",
         "true",
         Bool(),
-        "Write measured wall times into history.csv (false gives "
+        "Write measured wall times into solver.csv (false gives "
         "reproducible files, e.g. for regression tests).");
       prm.declare_entry(
         "Revolved copy",

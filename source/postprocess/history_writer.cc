@@ -34,13 +34,12 @@ namespace formsolve
                                                      "columns_necking",
                                                      "columns_fracture"};
 
+      /// history.csv: the process as the forming engineer reads it.
       template <int dim>
       std::vector<std::string> columns(const tools::ToolSet<dim> &tools)
       {
         std::vector<std::string> c = {"step",
                                       "time",
-                                      "time_step",
-                                      "cutbacks",
                                       "punch_travel",
                                       "punch_force",
                                       "force_travel"};
@@ -49,24 +48,7 @@ namespace formsolve
         c.push_back("ironing_force");
         if (tools.holder_index() != tools::ToolSet<dim>::none)
           c.insert(c.end(), {"holder_displacement", "holder_engaged"});
-        c.insert(c.end(), {"max_penetration", "mean_penetration"});
-        for (unsigned int t = 0; t < tools.size(); ++t)
-          c.push_back("max_penetration_" + tools.key(t));
-        c.insert(c.end(),
-                 {"active_contacts",
-                  "pairs_over_allowed",
-                  "locked_pairs",
-                  "min_penalty",
-                  "max_penalty",
-                  "newton_iterations",
-                  "linear_iterations",
-                  "picard_iterations",
-                  "strict_passes",
-                  "max_linear_iterations",
-                  "condition_estimate",
-                  "dofs",
-                  "volume",
-                  "max_equivalent_strain"});
+        c.push_back("max_equivalent_strain");
         const auto where = coordinates<dim>();
         c.insert(c.end(),
                  {"min_thickness",
@@ -95,7 +77,38 @@ namespace formsolve
           c.push_back("max_cockcroft_latham_through_thickness_" + x);
         for (const auto &z : zone_columns)
           c.push_back(z);
-        c.push_back("wall_time");
+        return c;
+      }
+
+      /// solver.csv: how the step was solved, and the checks of the solution
+      /// (penetration, volume).
+      template <int dim>
+      std::vector<std::string> solver_columns(const tools::ToolSet<dim> &tools)
+      {
+        std::vector<std::string> c = {"step",
+                                      "time",
+                                      "punch_travel",
+                                      "time_step",
+                                      "cutbacks",
+                                      "max_penetration",
+                                      "mean_penetration"};
+        for (unsigned int t = 0; t < tools.size(); ++t)
+          c.push_back("max_penetration_" + tools.key(t));
+        c.insert(c.end(),
+                 {"active_contacts",
+                  "pairs_over_allowed",
+                  "locked_pairs",
+                  "min_penalty",
+                  "max_penalty",
+                  "newton_iterations",
+                  "linear_iterations",
+                  "picard_iterations",
+                  "strict_passes",
+                  "max_linear_iterations",
+                  "condition_estimate",
+                  "dofs",
+                  "volume",
+                  "wall_time"});
         return c;
       }
     } // namespace
@@ -107,6 +120,10 @@ namespace formsolve
                 columns(state.tools),
                 Utilities::MPI::this_mpi_process(state.comm) == 0,
                 keep_rows)
+        , solver_table(state.prm.output.directory + "/solver.csv",
+                       solver_columns(state.tools),
+                       Utilities::MPI::this_mpi_process(state.comm) == 0,
+                       keep_rows)
     {}
 
     template <int dim>
@@ -119,11 +136,14 @@ namespace formsolve
       const auto        &tools = state.tools;
       const double       sym   = state.prm.geometry.symmetry_factor();
       const unsigned int z     = dim - 1;
-      table.set("step", state.step);
-      table.set("time", state.time);
-      table.set("time_step", report.dt);
-      table.set("cutbacks", report.cutbacks);
-      table.set("punch_travel", tools.punch_travel());
+      for (auto *t : {&table, &solver_table})
+        {
+          t->set("step", state.step);
+          t->set("time", state.time);
+          t->set("punch_travel", tools.punch_travel());
+        }
+      solver_table.set("time_step", report.dt);
+      solver_table.set("cutbacks", report.cutbacks);
       // Axial (z) forces of the sheet on the tools, full part, pressing = +.
       table.set("punch_force", sym * stats.tool_force[tools.punch_index()][z]);
       table.set("force_travel", stats.force_travel);
@@ -140,24 +160,24 @@ namespace formsolve
                     tools[tools.holder_index()].displacement()[z]);
           table.set("holder_engaged", state.holder.force_control ? 1 : 0);
         }
-      table.set("max_penetration", stats.max_penetration);
-      table.set("mean_penetration", stats.mean_penetration);
+      solver_table.set("max_penetration", stats.max_penetration);
+      solver_table.set("mean_penetration", stats.mean_penetration);
       for (unsigned int t = 0; t < tools.size(); ++t)
-        table.set("max_penetration_" + tools.key(t),
-                  stats.tool_max_penetration[t]);
-      table.set("active_contacts", stats.n_active);
-      table.set("pairs_over_allowed", stats.n_over_allowed);
-      table.set("locked_pairs", stats.n_locked);
-      table.set("min_penalty", stats.min_factor);
-      table.set("max_penalty", stats.max_factor);
-      table.set("newton_iterations", report.iterations);
-      table.set("linear_iterations", report.linear_iterations);
-      table.set("picard_iterations", report.picard_iterations);
-      table.set("strict_passes", report.passes);
-      table.set("max_linear_iterations", report.max_linear_iterations);
-      table.set("condition_estimate", report.condition_estimate);
-      table.set("dofs", state.dof_handler.n_dofs());
-      table.set("volume", sym * volume(state));
+        solver_table.set("max_penetration_" + tools.key(t),
+                         stats.tool_max_penetration[t]);
+      solver_table.set("active_contacts", stats.n_active);
+      solver_table.set("pairs_over_allowed", stats.n_over_allowed);
+      solver_table.set("locked_pairs", stats.n_locked);
+      solver_table.set("min_penalty", stats.min_factor);
+      solver_table.set("max_penalty", stats.max_factor);
+      solver_table.set("newton_iterations", report.iterations);
+      solver_table.set("linear_iterations", report.linear_iterations);
+      solver_table.set("picard_iterations", report.picard_iterations);
+      solver_table.set("strict_passes", report.passes);
+      solver_table.set("max_linear_iterations", report.max_linear_iterations);
+      solver_table.set("condition_estimate", report.condition_estimate);
+      solver_table.set("dofs", state.dof_handler.n_dofs());
+      solver_table.set("volume", sym * volume(state));
       table.set("max_equivalent_strain",
                 maximum(state, &state::QuadraturePointHistory::strain).value);
       const auto &sheet = forming.sheet;
@@ -197,9 +217,10 @@ namespace formsolve
                 forming.through_thickness.cockcroft_latham.value);
       for (unsigned int z = 0; z < zone_columns.size(); ++z)
         table.set(zone_columns[z], sheet.zone_count[z]);
-      table.set("wall_time",
-                state.prm.output.wall_time_in_history ? wall_time : 0.);
+      solver_table.set("wall_time",
+                       state.prm.output.wall_time_in_history ? wall_time : 0.);
       table.write_row();
+      solver_table.write_row();
     }
 
 #define INSTANTIATE(dim) template class HistoryWriter<dim>;

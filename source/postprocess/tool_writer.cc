@@ -18,11 +18,11 @@ namespace formsolve
     {}
 
     template <int dim>
-    void ToolWriter<dim>::write(const unsigned int         step,
-                                const double               time,
-                                const tools::ToolSet<dim> &tools,
+    void ToolWriter<dim>::write(const unsigned int          step,
+                                const double                time,
+                                const tools::ToolSet<dim>  &tools,
                                 const tools::SurfaceExtent &extent,
-                                const MPI_Comm             comm)
+                                const MPI_Comm              comm)
     {
       if (Utilities::MPI::this_mpi_process(comm) != 0)
         return;

@@ -45,7 +45,11 @@ namespace formsolve
                     state.dof_handler,
                     *state.mapping,
                     f);
-      tool_writer->write(state.step, state.time, state.tools, tool_extent(), comm);
+      tool_writer->write(state.step,
+                         state.time,
+                         state.tools,
+                         tool_extent(),
+                         comm);
       last_output_step = state.step;
     }
 
@@ -79,8 +83,8 @@ namespace formsolve
       return e;
     }
 
-#define INSTANTIATE(dim)                                \
-  template void TimeLoop<dim>::write_output();          \
+#define INSTANTIATE(dim)                                       \
+  template void                 TimeLoop<dim>::write_output(); \
   template tools::SurfaceExtent TimeLoop<dim>::tool_extent() const;
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE

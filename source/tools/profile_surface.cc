@@ -26,8 +26,10 @@ namespace formsolve
         if (p.kind != Planform<dim>::Kind::rounded_rectangle)
           {
             // A circle (the unbounded plane: a disk out to reach).
-            const double r = std::max(
-              0., p.kind == Planform<dim>::Kind::circle ? p.radius + rho : rho);
+            const double r =
+              std::max(0.,
+                       p.kind == Planform<dim>::Kind::circle ? p.radius + rho
+                                                             : rho);
             const unsigned int n = 2 * n_side + n_corner;
             for (unsigned int i = 0; i <= n; ++i)
               {
@@ -67,8 +69,8 @@ namespace formsolve
             const int quadrant = ((k % 4) + 4) % 4;
             // Quadrants 1 and 3 run against the outline: mirror and reverse.
             const bool mirrored = quadrant % 2 == 1;
-            const int  sx = quadrant == 1 || quadrant == 2 ? -1 : 1;
-            const int  sy = quadrant >= 2 ? -1 : 1;
+            const int  sx       = quadrant == 1 || quadrant == 2 ? -1 : 1;
+            const int  sy       = quadrant >= 2 ? -1 : 1;
             for (std::size_t i = 0; i < q.size(); ++i)
               {
                 if (i == 0 && !all.empty())
@@ -105,25 +107,25 @@ namespace formsolve
     ToolSurface<dim>
     ProfileTool<dim>::surface(const SurfaceExtent &extent) const
     {
-      using Kind               = typename Planform<dim>::Kind;
-      const bool   unbounded   = planform.kind == Kind::unbounded;
+      using Kind           = typename Planform<dim>::Kind;
+      const bool unbounded = planform.kind == Kind::unbounded;
       Assert(dim == 3 || planform.kind != Kind::rounded_rectangle,
              ExcInternalError());
-      const double outline     = planform.kind == Kind::circle ?
-                                   planform.radius :
-                                   std::max(planform.half_length,
-                                        planform.half_width);
-      const double inradius    = planform.kind == Kind::circle ?
-                                   planform.radius :
-                                   std::min(planform.half_length,
-                                        planform.half_width);
-      const double R           = profile_radius;
+      const double outline =
+        planform.kind == Kind::circle
+          ? planform.radius
+          : std::max(planform.half_length, planform.half_width);
+      const double inradius =
+        planform.kind == Kind::circle
+          ? planform.radius
+          : std::min(planform.half_length, planform.half_width);
+      const double R = profile_radius;
       // The punch's face reaches the axis; the die's and holder's faces
       // reach past the sheet. Walls: the punch's and die's over the stroke,
       // the holder's over its edge radius.
-      const double a_max = unbounded  ? 0. :
-                           side_a < 0 ? inradius :
-                                        std::max(extent.reach - outline, R);
+      const double a_max = unbounded    ? 0.
+                           : side_a < 0 ? inradius
+                                        : std::max(extent.reach - outline, R);
       const double b_max =
         side_b < 0 || side_a < 0 ? extent.wall : R + 0.25 * extent.wall;
       std::vector<std::pair<double, double>> ab;
@@ -147,9 +149,8 @@ namespace formsolve
             }
           else
             {
-              const auto points =
-                ring(quadrant_outline(planform, rho), extent);
-              width = points.size();
+              const auto points = ring(quadrant_outline(planform, rho), extent);
+              width             = points.size();
               for (const auto &p : points)
                 s.points.emplace_back(p[0] + offset[0], p[1] + offset[1], z);
             }
@@ -177,7 +178,7 @@ namespace formsolve
       return s;
     }
 
-#define INSTANTIATE(dim)                                             \
+#define INSTANTIATE(dim)                                                     \
   template ToolSurface<dim> ProfileTool<dim>::surface(const SurfaceExtent &) \
     const;
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)

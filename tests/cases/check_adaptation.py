@@ -10,9 +10,10 @@ section 1), from history.csv, refinement.csv and run-summary.txt:
 - every adaptation keeps the sheet's volume within 1e-6 (relative).
 The run must have adapted after straining started, coarsening included."""
 import csv, os, sys
+import results
 
 out = sys.argv[1]
-rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
+rows = list(results.read(out))
 adaptations = list(csv.DictReader(open(os.path.join(out, "refinement.csv"))))
 summary = dict(line.split(" = ", 1) for line in
                open(os.path.join(out, "run-summary.txt")).read().splitlines()

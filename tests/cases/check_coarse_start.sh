@@ -18,14 +18,17 @@ mpirun -np 2 "$exe" "$prm" --set "Output/Output directory=$out/coarse2" \
   { echo "FAIL: run coarse2 failed"; tail -5 "$out/coarse2.log"; exit 1; }
 run skipped --set "Nonlinear solver/First step start=coarser mesh" \
   --set "Nonlinear solver/Coarse cell size limit=1"
-/usr/bin/python3 - "$out" <<'PY'
+CASES_DIR="$(cd "$(dirname "$0")" && pwd)" /usr/bin/python3 - "$out" <<'PY'
 import csv, re, sys
 out = sys.argv[1]
 fail = []
 def log(n): return open(f"{out}/{n}.log").read()
 def summary(n):
     return dict(l.split(" = ", 1) for l in open(f"{out}/{n}/run-summary.txt").read().splitlines() if " = " in l)
-def history(n): return list(csv.DictReader(open(f"{out}/{n}/history.csv")))
+import os
+sys.path.insert(0, os.environ["CASES_DIR"])
+import results
+def history(n): return results.read(f"{out}/{n}")
 pattern = r"first step on the coarser mesh \((\d+) DoFs\): (\d+) Newton iterations; its solution is the start"
 starts = {}
 for n in ("coarse", "coarse2"):

@@ -4,8 +4,9 @@ A step's velocity is solved on the geometry at the start of the step (explicit
 geometry update, doc/theory.md), so its force acts on the area V/h_n of the
 previous height h_n, while the strain has reached ln(h0/h) at the step's end."""
 import csv, math, sys
+import results
 
-rows = list(csv.DictReader(open(sys.argv[1] + "/history.csv")))
+rows = list(results.read(sys.argv[1]))
 K, n, eps0, h0 = 500.0, 0.2, 0.002, 10.0
 worst = 0.0
 h_start = h0

@@ -7,12 +7,13 @@ fewer matrices (the deferral happened and was not undone by misses).
 
 Usage: check_deferred.py OUT DEFAULT"""
 import csv, os, sys
+import results
 
 out, default = sys.argv[1:3]
 
 
 def rows(run):
-    return list(csv.DictReader(open(os.path.join(run, "history.csv"))))
+    return list(results.read(run))
 
 
 def summary(run):

@@ -5,13 +5,14 @@ the blank volume (2 pi int r dA in axisymmetry) is
 conserved within 0.1 % over the whole run; the punch force has a maximum
 inside the run and falls to below half of it at the end."""
 import csv, os, subprocess, sys
+import results
 
 out = sys.argv[1]
 summary = dict(l.split(" = ", 1) for l in open(os.path.join(out, "run-summary.txt")).read().splitlines())
 print("end:", summary["end_reason"], "| holder released at", summary["holder_release_travel"], "mm")
 ok = summary["end_reason"].startswith("drawn through")
 ok = ok and 0 < float(summary["holder_release_travel"]) < float(summary["final_punch_travel"])
-rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
+rows = list(results.read(out))
 engaged = [r["holder_engaged"] for r in rows]
 ok = ok and engaged[0] == "1" and engaged[-1] == "0" and engaged == sorted(engaged, reverse=True)
 vols = [float(r["volume"]) for r in rows]

@@ -3,9 +3,10 @@ platens: every column of sheet.csv has thickness h within 0.5 % and
 (minor, major) = (eps, eps), eps = ln(h0/h)/2, within 1 %; h is the platen
 distance at the end, h0 - travel + 2 penetration."""
 import csv, math, os, sys
+import results
 
 out = sys.argv[1]
-last = list(csv.DictReader(open(os.path.join(out, "history.csv"))))[-1]
+last = list(results.read(out))[-1]
 h0 = 1.0
 h = h0 - float(last["punch_travel"]) + 2 * float(last["max_penetration"])
 eps = 0.5 * math.log(h0 / h)

@@ -5,9 +5,10 @@ forces at hanging nodes reach the equations exactly once (statistics and
 assembly use the same pairs). Also the run must have had hanging nodes in
 contact: refinement.csv must show refined cells."""
 import csv, os, sys
+import results
 
 out = sys.argv[1]
-rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
+rows = list(results.read(out))
 worst = 0.0
 for r in rows:
     die, punch, bh = (float(r[k]) for k in ("force_die", "force_punch", "force_blank_holder"))

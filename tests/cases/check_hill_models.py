@@ -9,11 +9,12 @@ or law that differs from the axisymmetric one moves the first by far more.
 
 Usage: check_hill_models.py HILL_QUARTER HILL_AXI VM_QUARTER VM_AXI"""
 import csv, math, os, sys
+import results
 
 
 def rows(out):
     return {round(float(r["force_travel"]), 6): r
-            for r in csv.DictReader(open(os.path.join(out, "history.csv")))}
+            for r in results.read(out)}
 
 
 hq, ha, vq, va = (rows(o) for o in sys.argv[1:5])

@@ -6,10 +6,11 @@
   column averages its cells', one element each side) is as thick as the clearance, up to the two penetrations the contact
   allows: 0.6 - 2 delta <= t <= 0.6 (delta = 1e-3 mm), within 2e-4 mm."""
 import csv, os, sys
+import results
 
 out = sys.argv[1]
 clearance, delta = 0.6, 1e-3
-rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
+rows = list(results.read(out))
 summary = dict(l.rstrip("\n").split(" = ", 1) for l in open(os.path.join(out, "run-summary.txt")) if " = " in l)
 start = float(summary["ironing_travel"])
 fail = []

@@ -14,8 +14,10 @@ mpirun -np 2 "$exe" "$prm" --set "Output/Output directory=$out/logged2" \
   --set "Output/Report=false" "${common[@]}" \
   --set "Nonlinear solver/Log iterations=true" > "$out/logged2.log" 2>&1 ||
   { echo "FAIL: run logged2 failed"; tail -5 "$out/logged2.log"; exit 1; }
-cmp -s "$out/quiet/history.csv" "$out/logged/history.csv" ||
-  { echo "FAIL: the history differs with Log iterations = true"; exit 1; }
+for f in history.csv solver.csv; do
+  cmp -s "$out/quiet/$f" "$out/logged/$f" ||
+    { echo "FAIL: $f differs with Log iterations = true"; exit 1; }
+done
 changes() { grep -E '^ +it ' "$1" | sed -n 's/.*\(it *[0-9]*\) .*pairs: \([^ ]* [^ ]*\( [^ ]* [^ ]*\)*\)  .*/\1 \2/p'; }
 # Quadrature points in the rigid zone and their transitions (+rigid/-plastic).
 rigid() { grep -E '^ +it ' "$1" | sed -n 's/.*\(it *[0-9]*\) .*rigid points: \([0-9]* ([^)]*)\).*/\1 \2/p'; }

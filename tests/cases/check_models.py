@@ -9,11 +9,12 @@ last common step within TOL (absolute).
 
 Usage: check_models.py QUARTER_OUT AXISYMMETRIC_OUT [--thickness-strain TOL]"""
 import csv, math, os, subprocess, sys
+import results
 
 def forces(out):
     # A force acts on the configuration at the start of its step.
     return {round(float(r["force_travel"]), 6): float(r["punch_force"])
-            for r in csv.DictReader(open(os.path.join(out, "history.csv")))}
+            for r in results.read(out)}
 
 quarter, axi = forces(sys.argv[1]), forces(sys.argv[2])
 # A step cut in one run shifts its travels: compare the quarter's rows with
@@ -36,7 +37,7 @@ ok = worst <= 2e-2
 if "--thickness-strain" in sys.argv:
     tol = float(sys.argv[sys.argv.index("--thickness-strain") + 1])
     def thickness_strain(out):
-        rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
+        rows = list(results.read(out))
         last = [r for r in rows if abs(float(r["force_travel"]) - common[-1]) < 1e-6][0]
         t0 = float(rows[0]["min_thickness"]) / (1 - float(rows[0]["max_thinning_percent"]) / 100)
         return math.log(float(last["min_thickness"]) / t0)

@@ -1,8 +1,9 @@
 """Penetration equals (platen force / contact area) / penalty in every row.
 The contact area is that of the step's start geometry (see check_compression.py)."""
 import csv, sys
+import results
 
-rows = list(csv.DictReader(open(sys.argv[1] + "/history.csv")))
+rows = list(results.read(sys.argv[1]))
 penalty, h0 = 1e4, 10.0
 worst = 0.0
 h_start = h0

@@ -18,8 +18,10 @@ done
 rows=$(($(wc -l < "$out/np1/history.csv") - 1))
 [ "$rows" -ge 3 ] || { echo "FAIL: only $rows steps"; exit 1; }
 for ranks in 2 3; do
-  numdiff -q -s ', \t\n' -r 1e-5 -a 1e-7 "$out/np1/history.csv" "$out/np$ranks/history.csv" ||
-    { echo "FAIL: $ranks ranks differ from 1 rank:";
-      numdiff -s ', \t\n' -r 1e-5 -a 1e-7 "$out/np1/history.csv" "$out/np$ranks/history.csv" | head -30; exit 1; }
+  for f in history.csv solver.csv; do
+    numdiff -q -s ', \t\n' -r 1e-5 -a 1e-7 "$out/np1/$f" "$out/np$ranks/$f" ||
+      { echo "FAIL: $ranks ranks differ from 1 rank ($f):";
+        numdiff -s ', \t\n' -r 1e-5 -a 1e-7 "$out/np1/$f" "$out/np$ranks/$f" | head -30; exit 1; }
+  done
 done
-echo "ok: history.csv ($rows steps) the same on 1, 2 and 3 ranks"
+echo "ok: history.csv and solver.csv ($rows steps) the same on 1, 2 and 3 ranks"

@@ -1,4 +1,4 @@
-"""history.csv against the stored reference: the physics (forces, gaps,
+"""history.csv and solver.csv (merged, tests/cases/results.py) against the stored reference: the physics (forces, gaps,
 penetration, volume, thickness, damage, ...) tightly, per row, with the
 numdiff tolerances of the suite (relative 1e-5 or absolute 1e-7); the solver
 cost (Newton/linear/Picard iterations, strict passes, locked pairs,
@@ -28,6 +28,7 @@ Usage: check_regression.py OUTDIR REFERENCE [RELATIVE] [--absolute KEY=VALUE,...
   --no-locations: the locations of maxima and minima (_x, _y, _z) are not
   compared: with nearly tied nodes they follow round-off."""
 import csv
+import results
 import sys
 
 options = [a for a in sys.argv[1:] if a.startswith("--")]
@@ -44,8 +45,8 @@ relative = float(args[2]) if len(args) > 2 else 1e-5
 COST = {"newton_iterations", "linear_iterations", "picard_iterations",
         "strict_passes", "max_linear_iterations", "locked_pairs",
         "condition_estimate", "wall_time"}
-ref = list(csv.DictReader(open(reference)))
-got = list(csv.DictReader(open(f"{out}/history.csv")))
+ref = results.read(reference)
+got = list(results.read(out))
 failures = []
 if len(ref) != len(got):
     failures.append(f"{len(got)} steps, the reference has {len(ref)}")

@@ -6,11 +6,12 @@ critical stroke); every PNG it embeds, the two rendered pictures included,
 is a PNG that is not blank (its pixels are not all one colour); report.html
 holds the same table rows and embeds the same pictures."""
 import csv, os, re, sys
+import results
 
 run = sys.argv[1]
 report = os.path.join(run, "report")
 text = open(os.path.join(report, "report.md")).read()
-rows = list(csv.DictReader(open(os.path.join(run, "history.csv"))))
+rows = list(results.read(run))
 col = lambda k: [float(r[k]) for r in rows]
 ok = True
 

@@ -37,6 +37,7 @@ for kill in "step:$kill_step" "checkpoint:$checkpoint_step"; do
   grep -q "resumed from the checkpoint at step $at" "$dir.resume.log" ||
     { echo "FAIL: did not say where it resumed"; head "$dir.resume.log"; exit 1; }
   same history.csv "$out/uninterrupted" "$dir"
+  same solver.csv "$out/uninterrupted" "$dir"
   [ -f "$out/uninterrupted/refinement.csv" ] && same refinement.csv "$out/uninterrupted" "$dir"
   same sheet.csv "$out/uninterrupted" "$dir"
   leftovers=$(find "$dir" -name '*.tmp' -o -name 'checkpoint.new' -o -name 'checkpoint.old')
@@ -48,5 +49,5 @@ for kill in "step:$kill_step" "checkpoint:$checkpoint_step"; do
   for f in $(grep -o 'file="[^"]*"' "$dir/solution.pvd" | cut -d'"' -f2); do
     [ -s "$dir/$f" ] || { echo "FAIL: $f is missing"; exit 1; }
   done; }
-  echo "ok: killed at $kill, resumed from step $at: history.csv, refinement.csv, sheet.csv and solution.pvd as uninterrupted"
+  echo "ok: killed at $kill, resumed from step $at: history.csv, solver.csv, refinement.csv, sheet.csv and solution.pvd as uninterrupted"
 done

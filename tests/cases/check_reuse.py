@@ -10,6 +10,7 @@ log's "it  1" lines, where a reuse attempt takes GMRES iterations.
 
 Usage: check_reuse.py OUT REFERENCE [--per-solve]"""
 import csv, os, re, subprocess, sys
+import results
 
 out, reference = sys.argv[1:3]
 per_solve = "--per-solve" in sys.argv[3:]
@@ -19,7 +20,7 @@ summary = dict(line.rstrip("\n").split(" = ", 1) for line in open(os.path.join(o
 newton, factorised = int(summary["newton_iterations"]), int(summary["factorisations"])
 print(f"{factorised} factorisations in {newton} Newton iterations")
 if per_solve:
-    rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
+    rows = list(results.read(out))
     solves = sum(1 + int(r["strict_passes"]) for r in rows)
     first = [int(m.group(1)) for m in (re.match(r"\s+it\s+1 .*\blinear=(\d+)", line) for line in open(out + ".log")) if m]
     print(f"{solves} Newton solves; linear iterations of their first iterations: {first}")

@@ -5,6 +5,7 @@ swept between two half-planes dtheta apart spans sin(dtheta) int r dA, so
 with n segments the revolved mesh holds n sin(dtheta) / (2 pi) times the
 history's volume (2 pi int r dA), to float32 precision."""
 import csv, math, os, re, sys
+import results
 import xml.etree.ElementTree as ET
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
@@ -48,7 +49,7 @@ for a in g:
             smallest = min(smallest, det.min())
             volume += det.sum() / 8
 assert smallest > -1e-9, f"a revolved cell is left-handed (det J = {smallest})"
-rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
+rows = list(results.read(out))
 n = math.ceil(angle / 5)
 expected = float(rows[-1]["volume"]) * n * math.sin(math.radians(angle / n)) / (2 * math.pi)
 err = abs(volume / expected - 1)

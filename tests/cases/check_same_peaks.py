@@ -2,9 +2,10 @@
 equivalent strain and largest Oyane integral within a relative tolerance.
 Usage: check_same_peaks.py OUTDIR OTHER_OUTDIR TOLERANCE"""
 import csv, os, sys
+import results
 
 out, other, tol = sys.argv[1], sys.argv[2], float(sys.argv[3])
-last = [list(csv.DictReader(open(os.path.join(d, "history.csv"))))[-1]
+last = [list(results.read(d))[-1]
         for d in (out, other)]
 ok = last[0]["punch_travel"] == last[1]["punch_travel"]
 for key in ("punch_force", "max_equivalent_strain", "max_oyane"):

@@ -8,11 +8,12 @@ details (factors, locked pairs, the penetration below delta) follow the
 iteration path and are not compared.
 Usage: check_same_physics.py OUT REFERENCE RELATIVE [DELTA]"""
 import csv, sys
+import results
 
 out, reference, relative = sys.argv[1], sys.argv[2], float(sys.argv[3])
 delta = float(sys.argv[4]) if len(sys.argv) > 4 else 1e-3
-rows = list(csv.DictReader(open(out + "/history.csv")))
-ref = list(csv.DictReader(open(reference)))
+rows = list(results.read(out))
+ref = results.read(reference)
 ok = len(rows) == len(ref)
 print(f"{len(rows)} steps, reference {len(ref)}")
 forces = ("punch_force", "force_die", "force_blank_holder")

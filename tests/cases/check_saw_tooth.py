@@ -5,11 +5,12 @@ release to 2.5 mm before the end, where the rim is ironed) is at least 40 %
 smaller on a planform one level finer (measured: 7.7 % -> 2.8 % of the mean
 force; the time step does not change it, doc/user-guide.md)."""
 import csv, os, sys
+import results
 import numpy as np
 
 
 def oscillation(out):
-    rows = list(csv.DictReader(open(os.path.join(out, "history.csv"))))
+    rows = list(results.read(out))
     s = np.array([float(r["punch_travel"]) for r in rows])
     f = np.array([float(r["punch_force"]) for r in rows])
     free = [i for i, r in enumerate(rows) if float(r["holder_engaged"]) == 0]

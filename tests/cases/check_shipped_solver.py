@@ -20,6 +20,7 @@ solve, inexact Newton with Forcing) against the reference of exact solves
 
 Usage: check_shipped_solver.py OUT REFERENCE"""
 import csv
+import results
 import os
 import re
 import subprocess
@@ -32,7 +33,7 @@ ok = subprocess.call([sys.executable, os.path.join(here, "check_regression.py"),
                       "--no-locations"]) == 0
 allowed = float(re.search(r"set Allowed penetration\s*=\s*(\S+)",
                           open(os.path.join(out, "parameters.prm")).read()).group(1))
-deepest = max(float(r["max_penetration"]) for r in csv.DictReader(open(os.path.join(out, "history.csv"))))
+deepest = max(float(r["max_penetration"]) for r in results.read(out))
 print(f"deepest penetration {deepest:.4e} mm (allowed {allowed:g})")
 ok = ok and deepest <= allowed
 summary = dict(line.rstrip("\n").split(" = ", 1) for line in open(os.path.join(out, "run-summary.txt")) if " = " in line)

@@ -5,11 +5,12 @@ within 1 %.
 
 Usage: check_step_control.py OUT REFERENCE_OUT"""
 import csv, os, sys
+import results
 
-rows = list(csv.DictReader(open(os.path.join(sys.argv[1], "history.csv"))))
+rows = list(results.read(sys.argv[1]))
 # A force acts on the configuration at the start of its step (force_travel).
 ref = {round(float(r["force_travel"]), 6): float(r["punch_force"])
-       for r in csv.DictReader(open(os.path.join(sys.argv[2], "history.csv")))}
+       for r in results.read(sys.argv[2])}
 cuts = sum(int(float(r["cutbacks"])) for r in rows)
 print(f"{len(rows)} steps, {cuts} cut(s); time steps {[r['time_step'] for r in rows]}")
 ok = cuts > 0 and abs(float(rows[-1]["punch_travel"]) - 3) < 1e-9

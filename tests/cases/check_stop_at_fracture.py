@@ -7,9 +7,10 @@ within the last step's travel; the other measure's critical stroke is
 reported as well (-1 if not reached).
 Usage: check_stop_at_fracture.py OUT COLUMN"""
 import csv, sys
+import results
 
 out = sys.argv[1]
-rows = list(csv.DictReader(open(out + "/history.csv")))
+rows = list(results.read(out))
 summary = dict(l.rstrip("\n").split(" = ", 1) for l in open(out + "/run-summary.txt") if " = " in l)
 column = sys.argv[2]
 oyane = [float(r[column]) for r in rows]

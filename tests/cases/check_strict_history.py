@@ -1,7 +1,8 @@
 """adaptive-strict: max penetration <= delta in every row of history.csv."""
 import csv, sys
+import results
 
-rows = list(csv.DictReader(open(sys.argv[1] + "/history.csv")))
+rows = list(results.read(sys.argv[1]))
 delta = 1e-3
 for r in rows:
     print(f"step {r['step']}: max penetration {float(r['max_penetration']):.4e} mm, "

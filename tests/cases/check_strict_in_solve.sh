@@ -13,11 +13,14 @@ run within --set "Contact/Strict check residual=0.1"
 corrected=$(grep -c "strict check: factors corrected" "$out/within.log")
 [ "$(grep -c "strict check: factors corrected" "$out/after.log")" = 0 ] ||
   { echo "FAIL: Strict check residual = 0 corrected within a solve"; exit 1; }
-/usr/bin/python3 - "$out" "$corrected" <<'PY'
+CASES_DIR="$(cd "$(dirname "$0")" && pwd)" /usr/bin/python3 - "$out" "$corrected" <<'PY'
 import csv, sys
+import os
+sys.path.insert(0, os.environ["CASES_DIR"])
+import results
 out, corrected = sys.argv[1], int(sys.argv[2])
 delta, max_passes = 1e-3, 5
-runs = {n: list(csv.DictReader(open(f"{out}/{n}/history.csv"))) for n in ("after", "within")}
+runs = {n: results.read(f"{out}/{n}") for n in ("after", "within")}
 fail = []
 if corrected == 0:
     fail.append("no correction within a solve: the case tests nothing")

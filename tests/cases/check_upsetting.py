@@ -11,9 +11,10 @@ Usage: check_upsetting.py OUT TOLERANCE [OTHER_OUT OTHER_TOLERANCE]
 With OTHER_OUT, the punch forces must also agree with that run's, row by row,
 within OTHER_TOLERANCE (relative)."""
 import csv, sys
+import results
 
 K, n, eps0, h0 = 500.0, 0.2, 0.002, 10.0
-rows = list(csv.DictReader(open(sys.argv[1] + "/history.csv")))
+rows = list(results.read(sys.argv[1]))
 tolerance = float(sys.argv[2])
 assert len(rows) == 30, f"expected 30 steps, got {len(rows)}"
 worst, h_prev, eps = 0.0, h0, 0.0
@@ -28,7 +29,7 @@ print(f"closed form: worst relative error {worst:.2e} (limit {tolerance:g}), "
       f"last force {float(rows[-1]['punch_force']):.1f} N")
 ok = worst < tolerance
 if len(sys.argv) > 3:
-    other = list(csv.DictReader(open(sys.argv[3] + "/history.csv")))
+    other = list(results.read(sys.argv[3]))
     assert len(other) == len(rows)
     diff = max(abs(float(a["punch_force"]) / float(b["punch_force"]) - 1)
                for a, b in zip(rows, other))

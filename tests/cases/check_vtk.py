@@ -1,6 +1,7 @@
 """Read the written .pvd/.pvtu back with VTK's own reader: every expected field
 present, with finite values, on both MPI ranks' pieces."""
 import math, os, sys
+import results
 import xml.etree.ElementTree as ET
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
@@ -46,7 +47,7 @@ print("all fields present and finite")
 # starts on the sheet and moves down by the travel, the die face stays at
 # z = 0, the holder face at t0 + 0.05 mm (gap control).
 import csv
-history = {round(float(r["time"]), 9): r for r in csv.DictReader(open(os.path.join(out, "history.csv")))}
+history = {round(float(r["time"]), 9): r for r in results.read(out)}
 tools = ET.parse(os.path.join(out, "tools.pvd")).getroot().findall(".//DataSet")
 assert [float(ds.get("timestep")) for ds in tools] == times, "tools.pvd: not the times of solution.pvd"
 for ds in tools:

@@ -1,5 +1,6 @@
-// history.csv: one row per converged step, columns by name (documented in
-// doc/user-guide.md, section 5).
+// history.csv (the process) and solver.csv (how each step was solved, and
+// the solution's checks): one row per converged step each, columns by name
+// (documented in doc/user-guide.md, section 5).
 #pragma once
 
 #include <formsolve/contact/contact_statistics.h>
@@ -30,9 +31,9 @@ namespace formsolve
     class HistoryWriter
     {
     public:
-      /// Creates <Output directory>/history.csv (rank 0) with the columns of
-      /// the tools of @p state.
-      /// With @p keep_rows >= 0, a resumed run: the file keeps that many rows.
+      /// Creates <Output directory>/history.csv and solver.csv (rank 0) with
+      /// the columns of the tools of @p state.
+      /// With @p keep_rows >= 0, a resumed run: the files keep that many rows.
       HistoryWriter(const state::State<dim> &state, const int keep_rows = -1);
 
       /// One row for the step just advanced. Forces are for the full part.
@@ -43,7 +44,7 @@ namespace formsolve
                  const double                           wall_time);
 
     private:
-      StatisticsTable table;
+      StatisticsTable table, solver_table;
     };
   } // namespace postprocess
 } // namespace formsolve
