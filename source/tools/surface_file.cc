@@ -1,0 +1,45 @@
+#include <deal.II/base/exceptions.h>
+
+#include <formsolve/tools/surface_file.h>
+
+#include <CGAL/IO/STL.h>
+
+#include <filesystem>
+
+namespace formsolve
+{
+  namespace tools
+  {
+    using namespace dealii;
+
+    SurfaceMesh read_stl(const std::string &file)
+    {
+      AssertThrow(std::filesystem::is_regular_file(file),
+                  ExcMessage("tool surface file '" + file +
+                             "': no such file"));
+      std::vector<std::array<double, 3>> points;
+      std::vector<std::array<int, 3>>    facets;
+      const bool read = CGAL::IO::read_STL(file, points, facets);
+      AssertThrow(read,
+                  ExcMessage("tool surface file '" + file +
+                             "': not a readable STL file (ASCII or binary)"));
+      AssertThrow(!facets.empty(),
+                  ExcMessage("tool surface file '" + file +
+                             "': no triangles in it"));
+      SurfaceMesh m;
+      for (const auto &p : points)
+        m.vertices.emplace_back(p[0], p[1], p[2]);
+      for (const auto &f : facets)
+        {
+          for (const int v : f)
+            AssertThrow(v >= 0 && v < static_cast<int>(points.size()),
+                        ExcMessage("tool surface file '" + file +
+                                   "': a triangle refers to a missing vertex"));
+          m.triangles.push_back({{static_cast<unsigned int>(f[0]),
+                                  static_cast<unsigned int>(f[1]),
+                                  static_cast<unsigned int>(f[2])}});
+        }
+      return m;
+    }
+  } // namespace tools
+} // namespace formsolve
