@@ -5,6 +5,7 @@ set -euo pipefail
 packages=(
   cmake make g++ libdeal.ii-dev     # deal.II 9.4 with Trilinos, p4est, PETSc, MPI, gmsh
   libmumps-dev libmetis-dev         # MUMPS C interface and METIS, called directly
+  libcgal-dev                       # AABB trees of triangulated tool surfaces
   libopenblas0-serial               # optimised BLAS for MUMPS (reference libblas3 is ~4x slower)
   openmpi-bin                       # mpirun
   gmsh                              # meshing .geo planforms

@@ -15,8 +15,7 @@ namespace formsolve
     SurfaceMesh read_stl(const std::string &file)
     {
       AssertThrow(std::filesystem::is_regular_file(file),
-                  ExcMessage("tool surface file '" + file +
-                             "': no such file"));
+                  ExcMessage("tool surface file '" + file + "': no such file"));
       std::vector<std::array<double, 3>> points;
       std::vector<std::array<int, 3>>    facets;
       const bool read = CGAL::IO::read_STL(file, points, facets);

@@ -39,14 +39,13 @@ namespace formsolve
       }
 
       /// The interior angle of triangle t at its corner k.
-      double corner_angle(const std::vector<Point<3>>         &x,
+      double corner_angle(const std::vector<Point<3>>       &x,
                           const std::array<unsigned int, 3> &t,
-                          const unsigned int                  k)
+                          const unsigned int                 k)
       {
         const Tensor<1, 3> a = x[t[(k + 1) % 3]] - x[t[k]];
         const Tensor<1, 3> b = x[t[(k + 2) % 3]] - x[t[k]];
-        return std::acos(
-          std::clamp(a * b / (a.norm() * b.norm()), -1., 1.));
+        return std::acos(std::clamp(a * b / (a.norm() * b.norm()), -1., 1.));
       }
     } // namespace
 
@@ -93,8 +92,9 @@ namespace formsolve
             const auto e = std::make_pair(faces[f][k], faces[f][(k + 1) % 3]);
             AssertThrow(directed.count(e) == 0,
                         ExcMessage(
-                          name + ": the triangles are not consistently "
-                                 "oriented (two neighbours at the edge from " +
+                          name +
+                          ": the triangles are not consistently "
+                          "oriented (two neighbours at the edge from " +
                           where(vertices[e.first]) + " to " +
                           where(vertices[e.second]) +
                           " point to opposite sides), or three triangles "
@@ -110,7 +110,8 @@ namespace formsolve
           {
             vertex_normal[faces[f][k]] +=
               corner_angle(vertices, faces[f], k) * face_normal[f];
-            const auto twin = directed.find({faces[f][(k + 1) % 3], faces[f][k]});
+            const auto twin =
+              directed.find({faces[f][(k + 1) % 3], faces[f][k]});
             edge_normal[f][k] = face_normal[f];
             if (twin != directed.end())
               edge_normal[f][k] += face_normal[twin->second];
@@ -141,23 +142,23 @@ namespace formsolve
 
       // Where in the triangle the closest point lies (barycentric
       // coordinates) decides whose pseudonormal gives the side.
-      const auto        &t = faces[q.triangle];
-      const Tensor<1, 3> e1 = vertices[t[1]] - vertices[t[0]],
-                         e2 = vertices[t[2]] - vertices[t[0]],
-                         r  = q.closest - vertices[t[0]];
-      const double d11 = e1 * e1, d12 = e1 * e2, d22 = e2 * e2;
-      const double det = d11 * d22 - d12 * d12;
-      const double b1  = (d22 * (r * e1) - d12 * (r * e2)) / det;
-      const double b2  = (d11 * (r * e2) - d12 * (r * e1)) / det;
-      const std::array<double, 3> w = {{1 - b1 - b2, b1, b2}};
+      const auto        &t            = faces[q.triangle];
+      const Tensor<1, 3> e1           = vertices[t[1]] - vertices[t[0]],
+                         e2           = vertices[t[2]] - vertices[t[0]],
+                         r            = q.closest - vertices[t[0]];
+      const double                d11 = e1 * e1, d12 = e1 * e2, d22 = e2 * e2;
+      const double                det = d11 * d22 - d12 * d12;
+      const double                b1  = (d22 * (r * e1) - d12 * (r * e2)) / det;
+      const double                b2  = (d11 * (r * e2) - d12 * (r * e1)) / det;
+      const std::array<double, 3> w   = {{1 - b1 - b2, b1, b2}};
       constexpr double            tol = 1e-10;
       Tensor<1, 3>                side  = face_normal[q.triangle];
       unsigned int                zeros = 0;
       for (unsigned int k = 0; k < 3; ++k)
         zeros += w[k] < tol;
       if (zeros >= 2) // a corner: the one with the weight
-        side = vertex_normal[t[std::max_element(w.begin(), w.end()) -
-                               w.begin()]];
+        side =
+          vertex_normal[t[std::max_element(w.begin(), w.end()) - w.begin()]];
       else if (zeros == 1) // an edge: the one opposite the zero weight
         {
           const unsigned int k =
@@ -165,12 +166,12 @@ namespace formsolve
           side = edge_normal[q.triangle][(k + 1) % 3];
         }
 
-      const Tensor<1, 3> away  = p - q.closest;
-      const double       sign  = away * side < 0 ? -1. : 1.;
+      const Tensor<1, 3> away   = p - q.closest;
+      const double       sign   = away * side < 0 ? -1. : 1.;
       const double       length = away.norm();
-      q.distance               = sign * length;
-      q.normal = length > 1e-12 * (1 + p.norm()) ? sign * away / length :
-                                                  side / side.norm();
+      q.distance                = sign * length;
+      q.normal = length > 1e-12 * (1 + p.norm()) ? sign * away / length
+                                                 : side / side.norm();
       return q;
     }
   } // namespace tools

@@ -6,14 +6,14 @@
 // and read back; missing and empty files refused.
 #include <formsolve/tools/triangle_surface.h>
 
-#include <cstdint>
-#include <functional>
+#include "check.h"
+
 #include <algorithm>
+#include <cstdint>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <random>
-
-#include "check.h"
 
 using namespace dealii;
 using namespace formsolve::tools;
@@ -23,8 +23,8 @@ namespace
   /// An icosahedron subdivided @p levels times, on the unit sphere, outward.
   SurfaceMesh icosphere(const unsigned int levels)
   {
-    const double t = (1 + std::sqrt(5.)) / 2;
-    SurfaceMesh  m;
+    const double                t = (1 + std::sqrt(5.)) / 2;
+    SurfaceMesh                 m;
     const std::vector<Point<3>> corners = {Point<3>(-1, t, 0),
                                            Point<3>(1, t, 0),
                                            Point<3>(-1, -t, 0),
@@ -40,26 +40,11 @@ namespace
     for (const auto &p : corners)
       m.vertices.push_back(p / p.norm());
     for (const auto &f : std::vector<std::array<unsigned int, 3>>{
-           {{0, 11, 5}},
-           {{0, 5, 1}},
-           {{0, 1, 7}},
-           {{0, 7, 10}},
-           {{0, 10, 11}},
-           {{1, 5, 9}},
-           {{5, 11, 4}},
-           {{11, 10, 2}},
-           {{10, 7, 6}},
-           {{7, 1, 8}},
-           {{3, 9, 4}},
-           {{3, 4, 2}},
-           {{3, 2, 6}},
-           {{3, 6, 8}},
-           {{3, 8, 9}},
-           {{4, 9, 5}},
-           {{2, 4, 11}},
-           {{6, 2, 10}},
-           {{8, 6, 7}},
-           {{9, 8, 1}}})
+           {{0, 11, 5}},  {{0, 5, 1}},  {{0, 1, 7}},  {{0, 7, 10}},
+           {{0, 10, 11}}, {{1, 5, 9}},  {{5, 11, 4}}, {{11, 10, 2}},
+           {{10, 7, 6}},  {{7, 1, 8}},  {{3, 9, 4}},  {{3, 4, 2}},
+           {{3, 2, 6}},   {{3, 6, 8}},  {{3, 8, 9}},  {{4, 9, 5}},
+           {{2, 4, 11}},  {{6, 2, 10}}, {{8, 6, 7}},  {{9, 8, 1}}})
       m.triangles.push_back(f);
     for (unsigned int l = 0; l < levels; ++l)
       {
@@ -100,8 +85,8 @@ namespace
     for (unsigned int j = 0; j < rows; ++j)
       for (unsigned int i = 0; i < n; ++i)
         {
-          const unsigned int a = j * n + i, b = j * n + (i + 1) % n,
-                             c = a + n, d = b + n;
+          const unsigned int a = j * n + i, b = j * n + (i + 1) % n, c = a + n,
+                             d = b + n;
           m.triangles.push_back({{a, b, d}});
           m.triangles.push_back({{a, d, c}});
         }
@@ -195,19 +180,23 @@ namespace
     const Point<3> x      = e * (1. - 0.01 / e.norm());
     double         nearer = 1;
     for (const auto &t : m.triangles)
-      if (std::count(t.begin(), t.end(), f[0]) + std::count(t.begin(), t.end(), f[1]) == 2)
+      if (std::count(t.begin(), t.end(), f[0]) +
+            std::count(t.begin(), t.end(), f[1]) ==
+          2)
         {
-          Tensor<1, 3> nt = cross_product_3d(m.vertices[t[1]] - m.vertices[t[0]],
-                                             m.vertices[t[2]] - m.vertices[t[0]]);
-          nearer = std::min(nearer, std::abs((x - m.vertices[t[0]]) * nt) / nt.norm());
+          Tensor<1, 3> nt =
+            cross_product_3d(m.vertices[t[1]] - m.vertices[t[0]],
+                             m.vertices[t[2]] - m.vertices[t[0]]);
+          nearer =
+            std::min(nearer, std::abs((x - m.vertices[t[0]]) * nt) / nt.norm());
         }
     test::close("edge from inside", s.closest(x).distance, -nearer, 1e-12);
     // Random points: the analytic sphere's distance within the sagitta.
     double edge = 0;
     for (const auto &t : m.triangles)
       edge = std::max(edge, (m.vertices[t[0]] - m.vertices[t[1]]).norm());
-    const double   sagitta = 1 - std::sqrt(1 - edge * edge / 3);
-    std::mt19937   random(7);
+    const double sagitta = 1 - std::sqrt(1 - edge * edge / 3);
+    std::mt19937 random(7);
     std::uniform_real_distribution<double> u(-2, 2);
     double                                 worst = 0;
     unsigned int                           wrong = 0;
@@ -233,53 +222,91 @@ namespace
     const double sagitta = 1 - std::cos(M_PI / 64);
     for (const double r : {0.2, 0.9, 1.1, 3.})
       {
-        const auto q = s.closest(Point<3>(r * std::cos(0.3), r * std::sin(0.3), 1.1));
-        test::close("cylinder at radius " + std::to_string(r), q.distance, r - 1, sagitta);
+        const auto q =
+          s.closest(Point<3>(r * std::cos(0.3), r * std::sin(0.3), 1.1));
+        test::close("cylinder at radius " + std::to_string(r),
+                    q.distance,
+                    r - 1,
+                    sagitta);
       }
     // A flat patch z = 0 on [0,1]^2, normal +z: beyond its edge the side is
     // still told by the edge's normal.
     SurfaceMesh patch;
-    patch.vertices  = {Point<3>(0, 0, 0), Point<3>(1, 0, 0), Point<3>(1, 1, 0),
+    patch.vertices  = {Point<3>(0, 0, 0),
+                       Point<3>(1, 0, 0),
+                       Point<3>(1, 1, 0),
                        Point<3>(0, 1, 0)};
     patch.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
     const TriangleSurface flat(patch, "patch");
-    test::close("patch above", flat.closest(Point<3>(0.4, 0.6, 0.2)).distance, 0.2, 1e-14);
-    test::close("patch below", flat.closest(Point<3>(0.4, 0.6, -0.2)).distance, -0.2, 1e-14);
+    test::close("patch above",
+                flat.closest(Point<3>(0.4, 0.6, 0.2)).distance,
+                0.2,
+                1e-14);
+    test::close("patch below",
+                flat.closest(Point<3>(0.4, 0.6, -0.2)).distance,
+                -0.2,
+                1e-14);
     test::close("beyond the edge, above",
-                flat.closest(Point<3>(2, 0.5, 0.1)).distance, std::hypot(1, 0.1), 1e-14);
+                flat.closest(Point<3>(2, 0.5, 0.1)).distance,
+                std::hypot(1, 0.1),
+                1e-14);
     test::close("beyond the edge, below",
-                flat.closest(Point<3>(2, 0.5, -0.1)).distance, -std::hypot(1, 0.1), 1e-14);
+                flat.closest(Point<3>(2, 0.5, -0.1)).distance,
+                -std::hypot(1, 0.1),
+                1e-14);
     test::close("beyond the corner, below",
-                flat.closest(Point<3>(2, 2, -0.1)).distance, -std::sqrt(2.01), 1e-14);
+                flat.closest(Point<3>(2, 2, -0.1)).distance,
+                -std::sqrt(2.01),
+                1e-14);
     patch.triangles[1] = {{0, 3, 2}};
-    test::close("a flipped triangle refused",
-                refused([&] { TriangleSurface(patch, "flipped.stl"); }, "flipped.stl: the triangles are not consistently oriented"),
-                1,
-                0);
+    test::close(
+      "a flipped triangle refused",
+      refused([&] { TriangleSurface(patch, "flipped.stl"); },
+              "flipped.stl: the triangles are not consistently oriented"),
+      1,
+      0);
   }
 
   void file_checks()
   {
-    const SurfaceMesh m = icosphere(2);
+    const SurfaceMesh     m = icosphere(2);
     const TriangleSurface reference(m, "sphere");
     for (const bool binary : {false, true})
       {
-        const std::string file = binary ? "sphere-binary.stl" : "sphere-ascii.stl";
+        const std::string file =
+          binary ? "sphere-binary.stl" : "sphere-ascii.stl";
         write_stl(m, file, binary);
         const SurfaceMesh read = read_stl(file);
-        test::close(file + ": triangles", read.triangles.size(), m.triangles.size(), 0);
-        test::close(file + ": shared vertices", read.vertices.size(), m.vertices.size(), 0);
+        test::close(file + ": triangles",
+                    read.triangles.size(),
+                    m.triangles.size(),
+                    0);
+        test::close(file + ": shared vertices",
+                    read.vertices.size(),
+                    m.vertices.size(),
+                    0);
         const TriangleSurface s(read, file);
-        double worst = 0;
-        for (const Point<3> p : {Point<3>(0.3, 1.7, -0.2), Point<3>(0.1, 0.2, 0.3)})
-          worst = std::max(worst, std::abs(s.closest(p).distance - reference.closest(p).distance));
-        test::close(file + ": the same distances", worst, 0, binary ? 1e-6 : 1e-5);
+        double                worst = 0;
+        for (const Point<3> p :
+             {Point<3>(0.3, 1.7, -0.2), Point<3>(0.1, 0.2, 0.3)})
+          worst = std::max(worst,
+                           std::abs(s.closest(p).distance -
+                                    reference.closest(p).distance));
+        test::close(file + ": the same distances",
+                    worst,
+                    0,
+                    binary ? 1e-6 : 1e-5);
       }
     test::close("missing file refused",
-                refused([] { read_stl("no-such-tool.stl"); }, "no-such-tool.stl"), 1, 0);
+                refused([] { read_stl("no-such-tool.stl"); },
+                        "no-such-tool.stl"),
+                1,
+                0);
     std::ofstream("empty-tool.stl").close();
     test::close("empty file refused",
-                refused([] { read_stl("empty-tool.stl"); }, "empty-tool.stl"), 1, 0);
+                refused([] { read_stl("empty-tool.stl"); }, "empty-tool.stl"),
+                1,
+                0);
   }
 } // namespace
 

@@ -29,7 +29,7 @@ namespace formsolve
       struct Query
       {
         /// Positive on the working side, negative behind the surface (mm).
-        double distance = 0;
+        double   distance = 0;
         Point<3> closest;
         /// Unit normal of the surface at the closest point, towards the
         /// working side.
