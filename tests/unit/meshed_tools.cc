@@ -3,16 +3,16 @@
 // analytic tools: at points within 1 mm of each working surface (face,
 // rounded edge, wall) the signed distance of the triangulated surface
 // differs from the exact one by no more than the sagitta L^2/(8 R) of the
-// longest edge L on the 8 mm profile radius R, the error falls at least 2.5-fold per halving of the facet
-// size (second order), and no point farther than that error from the surface
-// is put on the wrong side.
-// Usage: test_meshed_tools DIR_2MM DIR_1MM DIR_05MM
+// longest edge L on the 8 mm profile radius R, the error falls at
+// least 2.5-fold per halving of the facet size (second order), and no point
+// farther than that error from the surface is put on the wrong side. Usage:
+// test_meshed_tools DIR_2MM DIR_1MM DIR_05MM
 #include <formsolve/tools/profile_tool.h>
 #include <formsolve/tools/triangle_surface.h>
 
-#include <random>
-
 #include "check.h"
+
+#include <random>
 
 using namespace dealii;
 using namespace formsolve::tools;
@@ -21,9 +21,9 @@ namespace
 {
   struct Case
   {
-    std::string      name;
-    ProfileTool<3>   exact;
-    double           r_min, r_max, z_min, z_max; // where points are drawn
+    std::string    name;
+    ProfileTool<3> exact;
+    double         r_min, r_max, z_min, z_max; // where points are drawn
   };
 
   Planform<3> circle(const double radius)
@@ -70,19 +70,35 @@ int main(int argc, char **argv)
       std::cerr << "usage: test_meshed_tools DIR_2MM DIR_1MM DIR_05MM\n";
       return 2;
     }
-  const double   t0 = 0.78, R = 8;
-  Tensor<1, 3>   still;
+  const double      t0 = 0.78, R = 8;
+  Tensor<1, 3>      still;
   std::vector<Case> cases = {
-    {"punch", ProfileTool<3>("punch", circle(20), -1, +1, t0, R, still), 0, 28, t0 - 1, t0 + 9},
-    {"die", ProfileTool<3>("die", circle(21.25), +1, -1, 0, R, still), 14, 40, -9, 1},
-    {"holder", ProfileTool<3>("holder", circle(29.25), +1, +1, t0, R, still), 22, 40, t0 - 1, t0 + 8}};
+    {"punch",
+     ProfileTool<3>("punch", circle(20), -1, +1, t0, R, still),
+     0,
+     28,
+     t0 - 1,
+     t0 + 9},
+    {"die",
+     ProfileTool<3>("die", circle(21.25), +1, -1, 0, R, still),
+     14,
+     40,
+     -9,
+     1},
+    {"holder",
+     ProfileTool<3>("holder", circle(29.25), +1, +1, t0, R, still),
+     22,
+     40,
+     t0 - 1,
+     t0 + 8}};
   const std::vector<double> sizes = {2, 1, 0.5};
   for (const auto &c : cases)
     {
       std::vector<double> error;
       for (unsigned int k = 0; k < sizes.size(); ++k)
         {
-          const std::string     file = std::string(argv[k + 1]) + "/" + c.name + ".stl";
+          const std::string file =
+            std::string(argv[k + 1]) + "/" + c.name + ".stl";
           const SurfaceMesh     surface = read_stl(file);
           const TriangleSurface mesh(surface, file);
           const auto [worst, wrong] = compare(c, mesh);
@@ -90,22 +106,33 @@ int main(int argc, char **argv)
           for (const auto &t : surface.triangles)
             for (unsigned int e = 0; e < 3; ++e)
               longest = std::max(longest,
-                                 (surface.vertices[t[e]] - surface.vertices[t[(e + 1) % 3]]).norm());
+                                 (surface.vertices[t[e]] -
+                                  surface.vertices[t[(e + 1) % 3]])
+                                   .norm());
           const double sagitta = longest * longest / (8 * R);
           std::cout << c.name << ", facets of " << sizes[k] << " mm ("
-                    << mesh.n_triangles() << " triangles, longest edge " << longest
-                    << " mm): largest error "
-                    << worst << " mm, sagitta " << sagitta << " mm\n";
-          test::close(c.name + " at " + std::to_string(sizes[k]) + " mm: error within the sagitta",
+                    << mesh.n_triangles() << " triangles, longest edge "
+                    << longest << " mm): largest error " << worst
+                    << " mm, sagitta " << sagitta << " mm\n";
+          test::close(c.name + " at " + std::to_string(sizes[k]) +
+                        " mm: error within the sagitta",
                       worst <= sagitta,
                       1,
                       0);
-          test::close(c.name + " at " + std::to_string(sizes[k]) + " mm: wrong sides", wrong, 0, 0);
-          test::close(c.name + ": a closed surface", mesh.n_boundary_edges(), 0, 0);
+          test::close(c.name + " at " + std::to_string(sizes[k]) +
+                        " mm: wrong sides",
+                      wrong,
+                      0,
+                      0);
+          test::close(c.name + ": a closed surface",
+                      mesh.n_boundary_edges(),
+                      0,
+                      0);
           error.push_back(worst);
         }
       for (unsigned int k = 1; k < sizes.size(); ++k)
-        test::close(c.name + ": error falls 2.5-fold from " + std::to_string(sizes[k - 1]) + " mm",
+        test::close(c.name + ": error falls 2.5-fold from " +
+                      std::to_string(sizes[k - 1]) + " mm",
                     error[k] <= error[k - 1] / 2.5,
                     1,
                     0);
