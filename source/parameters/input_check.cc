@@ -137,6 +137,22 @@ namespace formsolve
           s = &s->sections.at(p);
         return s;
       }
+
+      /// Enters subsection @p name of the section at @p path (pushed onto
+      /// it), or throws "<where>: no subsection ...; did you mean ...".
+      void enter(const DeclaredSection    &root,
+                 std::vector<std::string> &path,
+                 const std::string        &name,
+                 const std::string        &where)
+      {
+        const DeclaredSection &here = *find(root, path);
+        AssertThrow(
+          here.sections.count(name),
+          ExcMessage(
+            where + ": " +
+            unknown("subsection", name, path, names_of(here.sections))));
+        path.push_back(name);
+      }
     } // namespace
 
     std::pair<std::vector<std::string>, std::string>
@@ -201,14 +217,7 @@ namespace formsolve
             space == std::string::npos ? "" : trim(text.substr(space));
           const DeclaredSection &here = *find(declared, path);
           if (word == "subsection")
-            {
-              AssertThrow(
-                here.sections.count(rest),
-                ExcMessage(
-                  where + ": " +
-                  unknown("subsection", rest, path, names_of(here.sections))));
-              path.push_back(rest);
-            }
+            enter(declared, path, rest, where);
           else if (word == "end")
             {
               AssertThrow(!path.empty(),
@@ -253,15 +262,7 @@ namespace formsolve
       const auto [parts, entry] = split_path(path_text);
       std::vector<std::string> path;
       for (const auto &p : parts)
-        {
-          const DeclaredSection &here = *find(declared, path);
-          AssertThrow(
-            here.sections.count(p),
-            ExcMessage(
-              where + ": " +
-              unknown("subsection", p, path, names_of(here.sections))));
-          path.push_back(p);
-        }
+        enter(declared, path, p, where);
       const DeclaredSection &here = *find(declared, path);
       AssertThrow(here.entries.count(entry),
                   ExcMessage(
