@@ -2,7 +2,8 @@
 # Meshed copies of the analytic tools of a shipped case, as STL and .msh:
 #   meshes/tools/make-tools.sh cup|square-cup FACET_SIZE_MM OUTDIR [FORMATS]
 # FORMATS: "stl msh" (default), or one of them.
-# cup: prm/cup-drawing.prm (punch 40/8, die 42.5/8, holder 58.5/8, t0 0.78);
+# cup: prm/cup-drawing.prm (punch 40/8, die 42.5/8, holder 58.5 with a sharp
+# edge, t0 0.78);
 # square-cup: prm/square-cup.prm (punch 40 x 40, corners 10, nose 6; die
 # 42.5 x 42.5, corners 11.25, entry 8; holder 58.5 x 58.5, corners 19.25).
 # Each tool is placed where the analytic one starts (punch and holder faces
@@ -23,7 +24,7 @@ case "$case" in
   cup)
     mesh punch punch.geo -setnumber d 40 -setnumber rp 8 -setnumber z0 0.78
     mesh die die.geo -setnumber d 42.5 -setnumber rd 8
-    mesh holder holder.geo -setnumber d 58.5 -setnumber rh 8 -setnumber z0 0.78 ;;
+    mesh holder holder.geo -setnumber d 58.5 -setnumber rh 0 -setnumber z0 0.78 ;;
   square-cup)
     mesh punch punch.geo -setnumber shape 1 -setnumber length 40 -setnumber width 40 \
       -setnumber rc 10 -setnumber rp 6 -setnumber z0 0.78

@@ -92,8 +92,7 @@ namespace formsolve
               "shows (0.02-0.3)");
       // Ironing: the wall passes a gap thinner than the sheet.
       const auto &pu = run.tools.punch, &di = run.tools.die;
-      if (pu.enabled && di.enabled && pu.shape == di.shape &&
-          pu.shape != ToolShape::flat)
+      if (pu.enabled && di.enabled && pu.shape == di.shape && pu.has_outline())
         {
           const double clearance =
             pu.shape == ToolShape::round

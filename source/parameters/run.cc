@@ -147,7 +147,9 @@ namespace formsolve
 
       const bool axi = geometry.model == model::Model::axisymmetric;
       for (const Tool *t : {&tools.punch, &tools.die, &tools.blank_holder})
-        require(!axi || !t->enabled || t->shape != ToolShape::rounded_rectangle,
+        require(!axi || !t->enabled ||
+                  (t->shape != ToolShape::rounded_rectangle &&
+                   t->shape != ToolShape::mesh),
                 "Tools/" + t->name + "/Shape",
                 "must be round or flat for Geometry/Model = axisymmetric");
       if (tools.die.enabled && tools.die.shape == ToolShape::round &&
@@ -169,17 +171,17 @@ namespace formsolve
               "is only available for Geometry/Model = axisymmetric");
       require(time.end_of_run != EndOfRun::holder_release ||
                 (tools.blank_holder.enabled &&
-                 tools.blank_holder.shape != ToolShape::flat),
+                 tools.blank_holder.has_outline()),
               "Time stepping/End of run",
               "'holder release' needs an enabled blank holder with an "
-              "opening");
+              "opening (Shape round or rounded rectangle)");
       // The scene must fit together.
       const double t0         = geometry.thickness;
       const auto   punch_half = half_sizes(tools.punch),
                  die_half     = half_sizes(tools.die),
                  holder_half  = half_sizes(tools.blank_holder);
-      if (tools.die.enabled && tools.punch.shape != ToolShape::flat &&
-          tools.die.shape != ToolShape::flat)
+      if (tools.die.enabled && tools.punch.has_outline() &&
+          tools.die.has_outline())
         for (unsigned int a = 0; a < 2; ++a)
           {
             std::ostringstream what;
@@ -195,9 +197,8 @@ namespace formsolve
                       : "Tools/Punch/Length",
                     what.str());
           }
-      if (tools.blank_holder.enabled &&
-          tools.blank_holder.shape != ToolShape::flat && tools.die.enabled &&
-          tools.die.shape != ToolShape::flat)
+      if (tools.blank_holder.enabled && tools.blank_holder.has_outline() &&
+          tools.die.enabled && tools.die.has_outline())
         for (unsigned int a = 0; a < 2; ++a)
           require(holder_half[a] >= die_half[a],
                   "Tools/Blank holder/Diameter",
@@ -228,9 +229,10 @@ namespace formsolve
                   what.str());
         }
       require(time.end_of_run != EndOfRun::draw_through ||
-                (tools.die.enabled && tools.die.shape != ToolShape::flat),
+                (tools.die.enabled && tools.die.has_outline()),
               "Time stepping/End of run",
-              "'draw-through' needs an enabled die with an opening");
+              "'draw-through' needs an enabled die with an opening (Shape "
+              "round or rounded rectangle)");
     }
   } // namespace parameters
 } // namespace formsolve

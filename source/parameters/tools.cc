@@ -1,3 +1,5 @@
+#include <deal.II/base/utilities.h>
+
 #include <formsolve/parameters/choice.h>
 #include <formsolve/parameters/require.h>
 #include <formsolve/parameters/tools.h>
@@ -16,7 +18,8 @@ namespace formsolve
       const Choice<ToolShape>     shape_names{{"round", ToolShape::round},
                                           {"rounded rectangle",
                                                ToolShape::rounded_rectangle},
-                                          {"flat", ToolShape::flat}};
+                                          {"flat", ToolShape::flat},
+                                          {"mesh", ToolShape::mesh}};
       const Choice<HolderControl> control_names{{"gap", HolderControl::gap},
                                                 {"force",
                                                  HolderControl::force}};
@@ -30,13 +33,13 @@ namespace formsolve
                         "Whether this tool takes part.");
       prm.declare_entry(
         "Shape",
-        d.shape == ToolShape::round               ? "round"
-        : d.shape == ToolShape::rounded_rectangle ? "rounded rectangle"
-                                                  : "flat",
+        shape_names.name(d.shape),
         Selection(shape_names.pattern()),
         "round: surface of revolution about the z axis (in the axisymmetric "
         "model its r-z profile); rounded rectangle: for square cups (3-D "
-        "models); flat: an infinite plane.");
+        "models); flat: an infinite plane; mesh: the triangulated surface "
+        "of 'Mesh file' (3-D models), moved by 'Mesh offset' and by 'Gap' "
+        "away from the sheet.");
       prm.declare_entry(
         "Diameter",
         str(d.diameter),
@@ -86,6 +89,35 @@ namespace formsolve
         Double(0),
         "Adaptive penalty: allowed penetration delta into this tool (mm); "
         "0 takes Contact/Allowed penetration.");
+      prm.declare_entry(
+        "Mesh file",
+        d.mesh_file,
+        Anything(),
+        "Shape = mesh: the tool's surface in mm, relative to the working "
+        "directory: STL (ASCII or binary) or a gmsh mesh (.msh, its "
+        "triangles), or geometry gmsh meshes at 'Facet size' (.geo, STEP "
+        ".step/.stp, IGES .iges/.igs, .brep). A closed surface is the "
+        "tool's solid; an open one is its working face, its side the one "
+        "the blank lies on. Normals are made to agree, each change said "
+        "in the log.");
+      prm.declare_entry("Mesh offset",
+                        "0, 0, 0",
+                        List(Double(), 3, 3, ","),
+                        "Shape = mesh: translation x, y, z added to the "
+                        "file's coordinates (mm).");
+      prm.declare_entry("Facet size",
+                        str(d.facet_size),
+                        Double(0),
+                        "Shape = mesh from .geo, STEP, IGES or BREP: the "
+                        "largest triangle edge gmsh makes (mm).");
+      prm.declare_entry(
+        "Feature angle",
+        str(d.feature_angle),
+        Double(0, 180),
+        "Shape = mesh: neighbouring triangles whose normals differ by more "
+        "than this (degrees) meet at a sharp edge; elsewhere the surface "
+        "is smoothed (normals interpolated from the vertices, doc/theory.md "
+        "eq. 7b).");
     }
 
     void Tool::parse(ParameterHandler &prm)
@@ -101,6 +133,13 @@ namespace formsolve
       friction_coefficient = prm.get_double("Friction coefficient");
       penalty_factor       = prm.get_double("Penalty factor");
       allowed_penetration  = prm.get_double("Allowed penetration");
+      mesh_file            = prm.get("Mesh file");
+      const auto offset =
+        dealii::Utilities::split_string_list(prm.get("Mesh offset"));
+      for (unsigned int c = 0; c < 3; ++c)
+        mesh_offset[c] = dealii::Utilities::string_to_double(offset[c]);
+      facet_size    = prm.get_double("Facet size");
+      feature_angle = prm.get_double("Feature angle");
     }
 
     void Tool::validate() const
@@ -115,6 +154,13 @@ namespace formsolve
           require(profile_radius <= 0.5 * diameter,
                   e + "Profile radius",
                   "must not exceed half the Diameter");
+        }
+      if (shape == ToolShape::mesh)
+        {
+          require(!mesh_file.empty(),
+                  e + "Mesh file",
+                  "must name the tool's surface file when Shape = mesh");
+          require_positive(facet_size, e + "Facet size", "mm");
         }
       if (shape == ToolShape::rounded_rectangle)
         {
@@ -225,8 +271,9 @@ namespace formsolve
           require_positive(holder_force, "Tools/Blank holder/Force", "N");
           require(blank_holder.shape != ToolShape::flat,
                   "Tools/Blank holder/Control",
-                  "force needs a holder with an opening (Shape round or "
-                  "rounded rectangle), so that the blank can leave it");
+                  "force needs a holder with an opening (Shape round, "
+                  "rounded rectangle or mesh), so that the blank can leave "
+                  "it");
         }
     }
   } // namespace parameters

@@ -45,6 +45,20 @@ namespace formsolve
                 patch.data(0, v) = t;
               patches.push_back(patch);
             }
+          if constexpr (dim == 3)
+            for (const auto &triangle : surface.triangles)
+              {
+                DataOutBase::Patch<2, 3> patch;
+                patch.reference_cell = ReferenceCells::Triangle;
+                patch.n_subdivisions = 1;
+                patch.patch_index    = patches.size();
+                for (unsigned int v = 0; v < 3; ++v)
+                  patch.vertices[v] = surface.points[triangle[v]];
+                patch.data.reinit(1, 3);
+                for (unsigned int v = 0; v < 3; ++v)
+                  patch.data(0, v) = t;
+                patches.push_back(patch);
+              }
         }
       const std::string name =
         "tools_" + Utilities::int_to_string(step, 5) + ".vtu";

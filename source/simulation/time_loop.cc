@@ -182,6 +182,8 @@ namespace formsolve
                  "CPU, which makes the factorisations about 2x slower; start "
                  "formsolve with "
               << advice << " (scripts/formsolve-run does)\n";
+      for (const auto &note : state.tools.notes())
+        pcout << "note: " << note << "\n";
       if (resume)
         pcout << "resumed from the checkpoint at step " << state.step
               << ", punch travel " << state.tools.punch_travel() << " mm"

@@ -39,8 +39,8 @@ namespace formsolve
           std::ostringstream s;
           s << "Tools/" << state.tools[t].name()
             << ": the blank starts inside this tool (" << worst
-            << " mm deep); check its Gap, Diameter and Profile radius "
-            << "against Geometry";
+            << " mm deep); check its Gap, Diameter and Profile radius (or "
+            << "Mesh offset) against Geometry";
           AssertThrow(worst <= tol, ExcMessage(s.str()));
         }
       // The holder must act on the flange, and the blank must lie on the die.

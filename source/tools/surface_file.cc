@@ -4,6 +4,8 @@
 
 #include <CGAL/IO/STL.h>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 namespace formsolve
@@ -39,6 +41,27 @@ namespace formsolve
                                   static_cast<unsigned int>(f[2])}});
         }
       return m;
+    }
+
+    SurfaceMesh read_surface(const std::string &file, const double facet_size)
+    {
+      std::string extension = std::filesystem::path(file).extension();
+      std::transform(extension.begin(),
+                     extension.end(),
+                     extension.begin(),
+                     [](const unsigned char c) { return std::tolower(c); });
+      if (extension == ".stl")
+        return read_stl(file);
+      for (const char *e :
+           {".msh", ".geo", ".step", ".stp", ".iges", ".igs", ".brep"})
+        if (extension == e)
+          return read_with_gmsh(file, facet_size);
+      AssertThrow(false,
+                  ExcMessage("tool surface file '" + file +
+                             "': unknown kind; give an STL (.stl), gmsh "
+                             "(.msh, .geo), STEP (.step, .stp), IGES (.iges, "
+                             ".igs) or BREP (.brep) file"));
+      return {};
     }
   } // namespace tools
 } // namespace formsolve

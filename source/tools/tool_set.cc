@@ -1,4 +1,5 @@
 #include <formsolve/model/dimensions.h>
+#include <formsolve/tools/mesh_tool.h>
 #include <formsolve/tools/profile_tool.h>
 #include <formsolve/tools/tool_set.h>
 
@@ -40,7 +41,10 @@ namespace formsolve
         : stroke(p.punch_stroke)
         , speed(p.punch_speed)
     {
-      auto add = [&](const parameters::Tool &t,
+      // Where a tool's radius bends the sheet (mesh refinement): curvature
+      // radii up to 20 sheet thicknesses.
+      const double bend_radius = 20 * thickness;
+      auto         add         = [&](const parameters::Tool &t,
                      const std::string      &key,
                      const int               sa,
                      const int               sb,
@@ -48,13 +52,55 @@ namespace formsolve
                      const Tensor<1, dim>   &v) {
         if (!t.enabled)
           return;
-        tools.push_back(std::make_unique<ProfileTool<dim>>(t.name,
-                                                           planform_of<dim>(t),
-                                                           sa,
-                                                           sb,
-                                                           z,
-                                                           t.profile_radius,
-                                                           v));
+        if (t.shape == ToolShape::mesh)
+          {
+            if constexpr (dim == 3)
+              {
+                // Gap moves the tool away from the sheet, as for the
+                // analytic tools.
+                Tensor<1, 3> shift;
+                for (unsigned int c = 0; c < 3; ++c)
+                  shift[c] = t.mesh_offset[c];
+                shift[2] += sb * t.gap;
+                std::string note;
+                const auto  mesh =
+                  load_tool_mesh(t.mesh_file, t.facet_size, shift, note);
+                double size = 0;
+                for (const auto &x : mesh.vertices)
+                  size = std::max(size, (x - mesh.vertices[0]).norm());
+                AssertThrow(size > thickness,
+                            ExcMessage("Tools/" + t.name +
+                                       "/Mesh file: " + t.mesh_file +
+                                       " spans " + std::to_string(size) +
+                                       " mm, less than the sheet thickness; "
+                                                       "lengths are in mm (a file in metres "
+                                                       "needs scaling by 1000)"));
+                auto tool = std::make_unique<MeshTool>(t.name,
+                                                       mesh,
+                                                       t.mesh_file,
+                                                       t.feature_angle,
+                                                       bend_radius,
+                                                       0.5 * thickness,
+                                                       v);
+                for (const auto &n : {note, tool->side_note()})
+                  if (!n.empty())
+                    orientation_notes.push_back("Tools/" + t.name + ": " + n);
+                tools.push_back(std::move(tool));
+              }
+            else
+              AssertThrow(false,
+                          ExcMessage("Tools/" + t.name +
+                                     "/Shape: mesh needs a 3-D model"));
+          }
+        else
+          tools.push_back(
+            std::make_unique<ProfileTool<dim>>(t.name,
+                                               planform_of<dim>(t),
+                                               sa,
+                                               sb,
+                                               z,
+                                               t.profile_radius,
+                                               v));
         friction.push_back(t.friction_coefficient);
         penalty.push_back(t.penalty_factor > 0 ? t.penalty_factor
                                                : c.penalty_factor);

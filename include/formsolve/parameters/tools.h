@@ -4,6 +4,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <array>
 #include <string>
 
 namespace formsolve
@@ -16,7 +17,8 @@ namespace formsolve
     {
       round,             // surface of revolution about the z axis
       rounded_rectangle, // for square cups (3-D models only)
-      flat               // an infinite plane
+      flat,              // an infinite plane
+      mesh               // a triangulated surface from a file (3-D models)
     };
 
     enum class HolderControl
@@ -40,6 +42,18 @@ namespace formsolve
       double      friction_coefficient = 0.1;
       double      penalty_factor       = 0; // N/mm^3; 0: Contact/Penalty factor
       double      allowed_penetration  = 0; // mm; 0: Contact/Allowed penetr.
+      std::string mesh_file            = "";   // Shape = mesh: STL, .msh, CAD
+      std::array<double, 3> mesh_offset{};     // mm, added to the file's points
+      double                facet_size    = 1; // mm, CAD files meshed by gmsh
+      double                feature_angle = 30; // degrees, sharp edges
+
+      /// Round or rounded rectangle: a planform with an edge (an opening
+      /// for the die and holder), which the scene's rules can compare.
+      bool has_outline() const
+      {
+        return shape == ToolShape::round ||
+               shape == ToolShape::rounded_rectangle;
+      }
 
       /// Declares the common entries inside the current subsection.
       static void declare(ParameterHandler &prm, const Tool &defaults);

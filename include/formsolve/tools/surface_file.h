@@ -1,4 +1,5 @@
-// Triangulated tool surfaces from files: STL (ASCII or binary), in mm.
+// Triangulated tool surfaces from files, in mm: STL (ASCII or binary), gmsh
+// meshes, and geometry (.geo, STEP, IGES, BREP) meshed by gmsh.
 #pragma once
 
 #include <deal.II/base/point.h>
@@ -26,5 +27,16 @@ namespace formsolve
     /// merges the facets' equal corners into shared vertices). A missing,
     /// empty or unreadable file is an error naming it.
     SurfaceMesh read_stl(const std::string &file);
+
+    /// The triangles of a gmsh mesh (.msh; quadrilaterals split in two), or
+    /// of the surfaces gmsh meshes from geometry (.geo, .step, .stp, .iges,
+    /// .igs, .brep) with triangle edges up to @p facet_size (mm). Read with
+    /// the gmsh library deal.II links.
+    SurfaceMesh read_with_gmsh(const std::string &file,
+                               const double       facet_size);
+
+    /// read_stl or read_with_gmsh by the file's extension; any other
+    /// extension is an error naming the file and the accepted ones.
+    SurfaceMesh read_surface(const std::string &file, const double facet_size);
   } // namespace tools
 } // namespace formsolve

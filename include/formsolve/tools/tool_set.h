@@ -52,6 +52,11 @@ namespace formsolve
       double axial_velocity(const unsigned int i) const;
 
       void advance(const double dt);
+      /// What reading the tools' files changed (orientation), to be said.
+      const std::vector<std::string> &notes() const
+      {
+        return orientation_notes;
+      }
       /// Put tool @p i back where a checkpoint found it.
       void   restore(const unsigned int    i,
                      const Tensor<1, dim> &displacement,
@@ -64,7 +69,7 @@ namespace formsolve
     private:
       std::vector<std::unique_ptr<RigidTool<dim>>> tools;
       std::vector<double>                          friction, penalty, allowed;
-      std::vector<std::string>                     keys;
+      std::vector<std::string>                     keys, orientation_notes;
       double                                       stroke, speed;
       unsigned int                                 die = none, holder = none;
     };

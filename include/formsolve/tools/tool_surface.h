@@ -28,6 +28,8 @@ namespace formsolve
       std::vector<dealii::Point<dim>> points;
       /// Quadrilaterals (3-D, deal.II's vertex order) or segments (2-D).
       std::vector<std::array<unsigned int, 2 * (dim - 1)>> cells;
+      /// Triangles (3-D tools from meshes).
+      std::vector<std::array<unsigned int, 3>> triangles;
     };
   } // namespace tools
 } // namespace formsolve

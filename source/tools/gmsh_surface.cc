@@ -1,0 +1,115 @@
+// Tool surfaces through the gmsh library: its meshes, and CAD geometry it
+// meshes with OpenCASCADE.
+#include <deal.II/base/exceptions.h>
+
+#include <formsolve/tools/surface_file.h>
+
+#include <filesystem>
+#include <gmsh.h>
+#include <map>
+
+namespace formsolve
+{
+  namespace tools
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /// gmsh's session for one file; finalized however the reading ends.
+      struct GmshSession
+      {
+        GmshSession()
+        {
+          gmsh::initialize(0, nullptr, false);
+          gmsh::option::setNumber("General.Terminal", 0);
+        }
+        ~GmshSession() { gmsh::finalize(); }
+      };
+
+      /// Calls @p f, turning gmsh's exceptions into an error naming @p file.
+      template <typename F>
+      void gmsh_checked(const std::string &file, const std::string &doing, F &&f)
+      {
+        std::string error;
+        try
+          {
+            f();
+            return;
+          }
+        catch (...)
+          {
+            gmsh::logger::getLastError(error);
+          }
+        AssertThrow(false,
+                    ExcMessage("tool surface file '" + file + "': gmsh " +
+                               doing + " failed: " + error));
+      }
+    } // namespace
+
+    SurfaceMesh read_with_gmsh(const std::string &file,
+                               const double       facet_size)
+    {
+      AssertThrow(std::filesystem::is_regular_file(file),
+                  ExcMessage("tool surface file '" + file + "': no such file"));
+      const bool  is_mesh = std::filesystem::path(file).extension() == ".msh";
+      GmshSession session;
+      gmsh_checked(file, "reading", [&] { gmsh::open(file); });
+      if (!is_mesh)
+        gmsh_checked(file, "meshing the surfaces", [&] {
+          gmsh::option::setNumber("Mesh.MeshSizeMax", facet_size);
+          gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1 * facet_size);
+          gmsh::model::mesh::generate(2);
+        });
+
+      SurfaceMesh                             m;
+      std::map<std::size_t, unsigned int>     index;
+      std::vector<std::size_t>                tags, elements, nodes;
+      std::vector<double>                     coordinates, parametric;
+      gmsh_checked(file, "reading the nodes", [&] {
+        gmsh::model::mesh::getNodes(
+          tags, coordinates, parametric, -1, -1, false, false);
+      });
+      for (unsigned int i = 0; i < tags.size(); ++i)
+        {
+          index[tags[i]] = m.vertices.size();
+          m.vertices.emplace_back(coordinates[3 * i],
+                                  coordinates[3 * i + 1],
+                                  coordinates[3 * i + 2]);
+        }
+      const auto vertex = [&](const std::size_t tag) {
+        const auto it = index.find(tag);
+        AssertThrow(it != index.end(),
+                    ExcMessage("tool surface file '" + file +
+                               "': an element refers to a missing node"));
+        return it->second;
+      };
+      // gmsh element types: 2 triangle, 9 six-node triangle (corners
+      // first), 3 quadrilateral, 16 eight-node quadrilateral.
+      for (const auto &[type, corners, stride] :
+           std::vector<std::array<int, 3>>{{{2, 3, 3}}, {{9, 3, 6}}, {{3, 4, 4}},
+                                            {{16, 4, 8}}})
+        {
+          // gmsh 4.8 leaves the vectors as they were for a type it lacks.
+          elements.clear();
+          nodes.clear();
+          gmsh_checked(file, "reading the elements", [&, type = type] {
+            gmsh::model::mesh::getElementsByType(type, elements, nodes);
+          });
+          for (std::size_t e = 0; e + stride <= nodes.size(); e += stride)
+            {
+              const unsigned int a = vertex(nodes[e]), b = vertex(nodes[e + 1]),
+                                 c = vertex(nodes[e + 2]);
+              m.triangles.push_back({{a, b, c}});
+              if (corners == 4)
+                m.triangles.push_back({{a, c, vertex(nodes[e + 3])}});
+            }
+        }
+      AssertThrow(!m.triangles.empty(),
+                  ExcMessage("tool surface file '" + file +
+                             "': no surface triangles or quadrilaterals in "
+                             "it"));
+      return m;
+    }
+  } // namespace tools
+} // namespace formsolve
