@@ -88,6 +88,8 @@ namespace formsolve
     {
       state.create_mesh();
       check_initial_scene();
+      for (const auto &note : state.tools.notes())
+        pcout << "note: " << note << "\n";
       pcout << "input valid: " << model::name(prm.geometry.model) << " model, "
             << state.tria.n_global_active_cells() << " cells, "
             << state.dof_handler.n_dofs() << " DoFs, " << state.tools.size()

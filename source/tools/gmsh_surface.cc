@@ -4,8 +4,9 @@
 
 #include <formsolve/tools/surface_file.h>
 
-#include <filesystem>
 #include <gmsh.h>
+
+#include <filesystem>
 #include <map>
 
 namespace formsolve
@@ -29,7 +30,8 @@ namespace formsolve
 
       /// Calls @p f, turning gmsh's exceptions into an error naming @p file.
       template <typename F>
-      void gmsh_checked(const std::string &file, const std::string &doing, F &&f)
+      void
+      gmsh_checked(const std::string &file, const std::string &doing, F &&f)
       {
         std::string error;
         try
@@ -47,8 +49,7 @@ namespace formsolve
       }
     } // namespace
 
-    SurfaceMesh read_with_gmsh(const std::string &file,
-                               const double       facet_size)
+    SurfaceMesh read_with_gmsh(const std::string &file, const double facet_size)
     {
       AssertThrow(std::filesystem::is_regular_file(file),
                   ExcMessage("tool surface file '" + file + "': no such file"));
@@ -62,13 +63,18 @@ namespace formsolve
           gmsh::model::mesh::generate(2);
         });
 
-      SurfaceMesh                             m;
-      std::map<std::size_t, unsigned int>     index;
-      std::vector<std::size_t>                tags, elements, nodes;
-      std::vector<double>                     coordinates, parametric;
+      SurfaceMesh                         m;
+      std::map<std::size_t, unsigned int> index;
+      std::vector<std::size_t>            tags, elements, nodes;
+      std::vector<double>                 coordinates, parametric;
       gmsh_checked(file, "reading the nodes", [&] {
-        gmsh::model::mesh::getNodes(
-          tags, coordinates, parametric, -1, -1, false, false);
+        gmsh::model::mesh::getNodes(tags,
+                                    coordinates,
+                                    parametric,
+                                    -1,
+                                    -1,
+                                    false,
+                                    false);
       });
       for (unsigned int i = 0; i < tags.size(); ++i)
         {
@@ -87,8 +93,10 @@ namespace formsolve
       // gmsh element types: 2 triangle, 9 six-node triangle (corners
       // first), 3 quadrilateral, 16 eight-node quadrilateral.
       for (const auto &[type, corners, stride] :
-           std::vector<std::array<int, 3>>{{{2, 3, 3}}, {{9, 3, 6}}, {{3, 4, 4}},
-                                            {{16, 4, 8}}})
+           std::vector<std::array<int, 3>>{{{2, 3, 3}},
+                                           {{9, 3, 6}},
+                                           {{3, 4, 4}},
+                                           {{16, 4, 8}}})
         {
           // gmsh 4.8 leaves the vectors as they were for a type it lacks.
           elements.clear();

@@ -49,8 +49,7 @@ namespace formsolve
     {
       std::ostringstream s;
       if (degenerate > 0)
-        s << file << ": " << degenerate
-          << " triangles without area left out. ";
+        s << file << ": " << degenerate << " triangles without area left out. ";
       if (turned > 0)
         s << file << ": " << turned
           << " triangles turned to agree with their neighbours. ";
@@ -72,9 +71,10 @@ namespace formsolve
         std::remove_if(m.triangles.begin(),
                        m.triangles.end(),
                        [&](const std::array<unsigned int, 3> &t) {
-                         const auto n = cross_product_3d(
-                           m.vertices[t[1]] - m.vertices[t[0]],
-                           m.vertices[t[2]] - m.vertices[t[0]]);
+                         const auto n =
+                           cross_product_3d(m.vertices[t[1]] - m.vertices[t[0]],
+                                            m.vertices[t[2]] -
+                                              m.vertices[t[0]]);
                          const double scale =
                            (m.vertices[t[1]] - m.vertices[t[0]]).norm_square() +
                            (m.vertices[t[2]] - m.vertices[t[0]]).norm_square();
@@ -169,9 +169,9 @@ namespace formsolve
               for (const auto f : members)
                 {
                   const auto &t = m.triangles[f];
-                  volume += m.vertices[t[0]] * cross_product_3d(
-                                                 Tensor<1, 3>(m.vertices[t[1]]),
-                                                 Tensor<1, 3>(m.vertices[t[2]]));
+                  volume += m.vertices[t[0]] *
+                            cross_product_3d(Tensor<1, 3>(m.vertices[t[1]]),
+                                             Tensor<1, 3>(m.vertices[t[2]]));
                 }
               turn_all = volume < 0;
             }

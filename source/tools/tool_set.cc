@@ -3,6 +3,8 @@
 #include <formsolve/tools/profile_tool.h>
 #include <formsolve/tools/tool_set.h>
 
+#include <sstream>
+
 namespace formsolve
 {
   namespace tools
@@ -32,6 +34,59 @@ namespace formsolve
           p.kind = Planform<dim>::Kind::unbounded;
         return p;
       }
+
+      /// A Shape = mesh tool: read, placed (Gap moves it away from the
+      /// sheet on side @p side, as for the analytic tools) and oriented;
+      /// what orienting changed goes to @p notes. Errors name the entry.
+      std::unique_ptr<MeshTool> mesh_tool(const parameters::Tool   &t,
+                                          const int                 side,
+                                          const double              thickness,
+                                          const Tensor<1, 3>       &v,
+                                          std::vector<std::string> &notes)
+      {
+        const std::string entry = "Tools/" + t.name + "/Mesh file: ";
+        try
+          {
+            Tensor<1, 3> shift;
+            for (unsigned int c = 0; c < 3; ++c)
+              shift[c] = t.mesh_offset[c];
+            shift[2] += side * t.gap;
+            std::string note;
+            const auto  mesh =
+              load_tool_mesh(t.mesh_file, t.facet_size, shift, note);
+            double size = 0;
+            for (const auto &x : mesh.vertices)
+              size = std::max(size, (x - mesh.vertices[0]).norm());
+            AssertThrow(size > thickness,
+                        ExcMessage(t.mesh_file + " spans " +
+                                   std::to_string(size) +
+                                   " mm, less than the sheet thickness; "
+                                   "lengths are in mm (a file in metres "
+                                   "needs scaling by 1000)"));
+            // Where the tool bends the sheet (mesh refinement): curvature
+            // radii up to 20 sheet thicknesses.
+            auto tool = std::make_unique<MeshTool>(t.name,
+                                                   mesh,
+                                                   t.mesh_file,
+                                                   t.feature_angle,
+                                                   20 * thickness,
+                                                   0.5 * thickness,
+                                                   v);
+            for (const auto &n : {note, tool->side_note()})
+              if (!n.empty())
+                notes.push_back("Tools/" + t.name + ": " + n);
+            return tool;
+          }
+        catch (const ExceptionBase &e)
+          {
+            std::ostringstream what;
+            e.print_info(what);
+            std::string text = what.str();
+            text.erase(0, text.find_first_not_of(" \n"));
+            AssertThrow(false, ExcMessage(entry + text));
+          }
+        return nullptr;
+      }
     } // namespace
 
     template <int dim>
@@ -41,10 +96,7 @@ namespace formsolve
         : stroke(p.punch_stroke)
         , speed(p.punch_speed)
     {
-      // Where a tool's radius bends the sheet (mesh refinement): curvature
-      // radii up to 20 sheet thicknesses.
-      const double bend_radius = 20 * thickness;
-      auto         add         = [&](const parameters::Tool &t,
+      auto add = [&](const parameters::Tool &t,
                      const std::string      &key,
                      const int               sa,
                      const int               sb,
@@ -55,38 +107,8 @@ namespace formsolve
         if (t.shape == ToolShape::mesh)
           {
             if constexpr (dim == 3)
-              {
-                // Gap moves the tool away from the sheet, as for the
-                // analytic tools.
-                Tensor<1, 3> shift;
-                for (unsigned int c = 0; c < 3; ++c)
-                  shift[c] = t.mesh_offset[c];
-                shift[2] += sb * t.gap;
-                std::string note;
-                const auto  mesh =
-                  load_tool_mesh(t.mesh_file, t.facet_size, shift, note);
-                double size = 0;
-                for (const auto &x : mesh.vertices)
-                  size = std::max(size, (x - mesh.vertices[0]).norm());
-                AssertThrow(size > thickness,
-                            ExcMessage("Tools/" + t.name +
-                                       "/Mesh file: " + t.mesh_file +
-                                       " spans " + std::to_string(size) +
-                                       " mm, less than the sheet thickness; "
-                                                       "lengths are in mm (a file in metres "
-                                                       "needs scaling by 1000)"));
-                auto tool = std::make_unique<MeshTool>(t.name,
-                                                       mesh,
-                                                       t.mesh_file,
-                                                       t.feature_angle,
-                                                       bend_radius,
-                                                       0.5 * thickness,
-                                                       v);
-                for (const auto &n : {note, tool->side_note()})
-                  if (!n.empty())
-                    orientation_notes.push_back("Tools/" + t.name + ": " + n);
-                tools.push_back(std::move(tool));
-              }
+              tools.push_back(
+                mesh_tool(t, sb, thickness, v, orientation_notes));
             else
               AssertThrow(false,
                           ExcMessage("Tools/" + t.name +

@@ -124,6 +124,43 @@ for m in empty triangles hexahedra garbage; do
   expect "gmsh_$m" "Geometry/Mesh file" "$base" --set "Geometry/Blank shape=gmsh" \
     --set "Geometry/Mesh file=$work/$m.msh"
 done
+# Meshed tools (3-D quarter cup): missing, empty, truncated, garbage files; a
+# file in metres; an open surface the sheet cannot see; a tool placed into
+# the blank. Tools from meshes/tools/make-tools.sh at coarse facets.
+base3d="$cases/cup-quarter.prm"
+bash "$cases/../../meshes/tools/make-tools.sh" cup 4 "$work/tools" stl > /dev/null
+# expect_die NAME PATTERN FILE [ARGS...]: the die from FILE.
+expect_die() {
+  local name=$1 pattern=$2 file=$3; shift 3
+  expect "$name" "$pattern" "$base3d" --set "Tools/Die/Shape=mesh" --set "Tools/Die/Mesh file=$file" "$@"
+}
+: > "$work/empty.stl"
+head -c 2000 "$work/tools/die.stl" > "$work/truncated.stl"
+head -c 3000 /dev/urandom > "$work/garbage.stl"
+awk '$1 == "vertex" { printf "vertex %g %g %g\n", $2 / 1000, $3 / 1000, $4 / 1000; next } { print }' \
+  "$work/tools/die.stl" > "$work/metres.stl"
+printf 'solid wall\nfacet normal 1 0 0\nouter loop\nvertex 30 -40 -20\nvertex 30 40 -20\nvertex 30 40 -1\nendloop\nendfacet\nendsolid wall\n' \
+  > "$work/wall.stl"
+for m in no-such-die empty truncated garbage; do
+  expect_die "mesh_$m" "Tools/Die/Mesh file: tool surface file '$work/$m.stl'" "$work/$m.stl"
+done
+expect_die mesh_metres "lengths are in mm" "$work/metres.stl"
+expect_die mesh_open_no_side "the sheet sees nothing" "$work/wall.stl"
+expect mesh_into_blank "Tools/Punch: the blank starts inside this tool" "$base3d" \
+  --set "Tools/Punch/Shape=mesh" --set "Tools/Punch/Mesh file=$work/tools/punch.stl" \
+  --set "Tools/Punch/Mesh offset=0, 0, -0.3"
+expect mesh_axisymmetric "must be round or flat for Geometry/Model = axisymmetric" "$cases/cup-axisymmetric.prm" \
+  --set "Tools/Die/Shape=mesh" --set "Tools/Die/Mesh file=$work/tools/die.stl"
+# A die whose normals all point inwards is turned, and the log says so.
+awk '$1 == "outer" { n = 0; print; next } $1 == "vertex" { v[n++] = $0; if (n == 3) { print v[0]; print v[2]; print v[1] } next } { print }' \
+  "$work/tools/die.stl" > "$work/inside-out.stl"
+if "$exe" "$base3d" --validate --set "Tools/Die/Shape=mesh" \
+     --set "Tools/Die/Mesh file=$work/inside-out.stl" > "$work/inside-out.out" 2>&1 &&
+   grep -q "closed parts were inside out: turned to face outwards" "$work/inside-out.out"; then
+  echo "ok   mesh_inside_out: turned and said"
+else
+  echo "FAIL mesh_inside_out:"; cat "$work/inside-out.out"; fail=1
+fi
 # Checkpoint and restart.
 expect resume_other_case "written by another case" "$base" --resume
 expect resume_no_checkpoint "no complete checkpoint" "$base" --resume \

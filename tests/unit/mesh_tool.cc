@@ -28,9 +28,18 @@ namespace
     SurfaceMesh m;
     for (unsigned int i = 0; i < 8; ++i)
       m.vertices.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
-    m.triangles = {{{0, 2, 3}}, {{0, 3, 1}}, {{4, 5, 7}}, {{4, 7, 6}},
-                   {{0, 1, 5}}, {{0, 5, 4}}, {{2, 6, 7}}, {{2, 7, 3}},
-                   {{0, 4, 6}}, {{0, 6, 2}}, {{1, 3, 7}}, {{1, 7, 5}}};
+    m.triangles = {{{0, 2, 3}},
+                   {{0, 3, 1}},
+                   {{4, 5, 7}},
+                   {{4, 7, 6}},
+                   {{0, 1, 5}},
+                   {{0, 5, 4}},
+                   {{2, 6, 7}},
+                   {{2, 7, 3}},
+                   {{0, 4, 6}},
+                   {{0, 6, 2}},
+                   {{1, 3, 7}},
+                   {{1, 7, 5}}};
     return m;
   }
 
@@ -72,7 +81,7 @@ namespace
             facet = std::max(facet, std::abs(s.closest(p).distance - exact));
             const auto q = s.smooth(p);
             smooth       = std::max(smooth, std::abs(q.distance - exact));
-            normal = std::max(normal, (q.normal - p / p.norm()).norm());
+            normal       = std::max(normal, (q.normal - p / p.norm()).norm());
           }
         std::cout << "sphere, " << s.n_triangles()
                   << " triangles: facets off by " << facet
@@ -96,23 +105,23 @@ namespace
   void sharp_edges()
   {
     // On a cube every edge is sharp: the smooth query is the exact one.
-    const TriangleSurface s(cube(), "cube");
-    std::mt19937          random(3);
+    const TriangleSurface                  s(cube(), "cube");
+    std::mt19937                           random(3);
     std::uniform_real_distribution<double> u(-0.5, 1.5);
     double                                 largest = 0;
     for (unsigned int i = 0; i < 2000; ++i)
       {
         const Point<3> p(u(random), u(random), u(random));
-        largest = std::max(largest,
-                           std::abs(s.smooth(p).distance -
-                                    s.closest(p).distance));
+        largest =
+          std::max(largest,
+                   std::abs(s.smooth(p).distance - s.closest(p).distance));
       }
     test::close("cube: sharp edges kept", largest, 0, 1e-12);
     // The open cylinder's rims are boundaries, its side smooth.
     const TriangleSurface c(test::cylinder(32, 4), "cylinder");
     const double          sagitta = 1 - std::cos(M_PI / 32);
-    const auto q = c.smooth(Point<3>(1.2 * std::cos(0.05), 1.2 * std::sin(0.05),
-                                     0.7));
+    const auto            q =
+      c.smooth(Point<3>(1.2 * std::cos(0.05), 1.2 * std::sin(0.05), 0.7));
     test::close("cylinder: smooth side, 20x better than the sagitta",
                 std::abs(q.distance - 0.2) < sagitta / 20,
                 1,
@@ -153,9 +162,12 @@ namespace
                        Point<3>(0, 1, 0),
                        Point<3>(2, 0, 0),
                        Point<3>(2, 1, 0)};
-    patch.triangles = {{{0, 1, 2}}, {{0, 2, 3}}, {{1, 2, 5}}, {{1, 4, 5}},
+    patch.triangles = {{{0, 1, 2}},
+                       {{0, 2, 3}},
+                       {{1, 2, 5}},
+                       {{1, 4, 5}},
                        {{2, 2, 3}}};
-    r = orient(patch, "patch.stl");
+    r               = orient(patch, "patch.stl");
     test::close("open patch: the minority turned", r.turned, 1, 0);
     test::close("open patch: the triangle without area left out",
                 r.degenerate,
@@ -219,7 +231,10 @@ namespace
     patch.triangles = {{{0, 2, 1}}, {{0, 3, 2}}};
     Tensor<1, 3>   still, normal;
     const MeshTool down("die", patch, "face.stl", 30, 20, 0.4, still);
-    test::close("open face turned to the sheet", !down.side_note().empty(), 1, 0);
+    test::close("open face turned to the sheet",
+                !down.side_note().empty(),
+                1,
+                0);
     test::close("... sheet above at +0.4",
                 down.signed_distance(Point<3>(1, 2, 0.4), normal),
                 0.4,
@@ -240,12 +255,12 @@ namespace
                       Point<3>(0, 5, 6),
                       Point<3>(0, -5, 6)};
     wall.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
-    test::close("a wall the sheet cannot see refused",
-                refused(
-                  [&] { MeshTool("punch", wall, "wall.stl", 30, 20, 0.4, still); },
-                  "wall.stl: an open surface of which the sheet sees nothing"),
-                1,
-                0);
+    test::close(
+      "a wall the sheet cannot see refused",
+      refused([&] { MeshTool("punch", wall, "wall.stl", 30, 20, 0.4, still); },
+              "wall.stl: an open surface of which the sheet sees nothing"),
+      1,
+      0);
     // The bending region: a unit sphere is curved for bend radii above 1.
     const auto sphere = test::icosphere(3);
     test::close("sphere curved below a bend radius of 2",
@@ -267,7 +282,10 @@ namespace
          "3 1 1 0\n4 0 1 0\n5 2 0 0\n6 2 1 0\n$EndNodes\n$Elements\n2\n"
          "1 3 2 0 1 1 2 3 4\n2 3 2 0 1 2 5 6 3\n$EndElements\n";
     const auto quads = read_surface("two-quads.msh", 1);
-    test::close(".msh quadrilaterals: 4 triangles", quads.triangles.size(), 4, 0);
+    test::close(".msh quadrilaterals: 4 triangles",
+                quads.triangles.size(),
+                4,
+                0);
     test::close(".msh: area", area(quads), 2, 1e-14);
 
     std::ofstream("box.geo")
@@ -275,13 +293,16 @@ namespace
     auto box = read_surface("box.geo", 2);
     test::close(".geo meshed: area", area(box), 280, 1e-9);
     orient(box, "box.geo");
-    test::close(".geo: closed", TriangleSurface(box, "box.geo").n_boundary_edges(), 0, 0);
+    test::close(".geo: closed",
+                TriangleSurface(box, "box.geo").n_boundary_edges(),
+                0,
+                0);
     test::close(".geo: volume", volume(box), 200, 1e-9);
     unsigned int longest_ok = 1;
     for (const auto &t : box.triangles)
       for (unsigned int k = 0; k < 3; ++k)
-        longest_ok &= (box.vertices[t[k]] - box.vertices[t[(k + 1) % 3]])
-                        .norm() <= 2 * 1.5;
+        longest_ok &=
+          (box.vertices[t[k]] - box.vertices[t[(k + 1) % 3]]).norm() <= 2 * 1.5;
     test::close(".geo: facets about the size asked for", longest_ok, 1, 0);
     // gmsh writes STEP from the geometry; read back and meshed.
     const int written = std::system("gmsh -0 box.geo -o box.step > /dev/null");

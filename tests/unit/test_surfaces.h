@@ -90,7 +90,8 @@ namespace test
     return m;
   }
 
-  inline void write_stl(const SurfaceMesh &m, const std::string &file, bool binary)
+  inline void
+  write_stl(const SurfaceMesh &m, const std::string &file, bool binary)
   {
     std::ofstream f(file, binary ? std::ios::binary : std::ios::out);
     if (!binary)

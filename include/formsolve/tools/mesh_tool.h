@@ -31,9 +31,9 @@ namespace formsolve
       /// Said when the open surface's normals were turned to the sheet.
       const std::string &side_note() const { return note; }
 
-      double signed_distance(const Point<3> &p,
-                             Tensor<1, 3>   &normal) const override;
-      double distance_to_radius(const Point<3> &p) const override;
+      double       signed_distance(const Point<3> &p,
+                                   Tensor<1, 3>   &normal) const override;
+      double       distance_to_radius(const Point<3> &p) const override;
       Tensor<1, 3> velocity() const override { return tool_velocity; }
       void set_velocity(const Tensor<1, 3> &v) override { tool_velocity = v; }
       Tensor<1, 3> displacement() const override { return offset; }
@@ -52,7 +52,7 @@ namespace formsolve
     private:
       std::string                      tool_name;
       TriangleSurface                  faces;
-      std::unique_ptr<TriangleSurface> bends; // null: nowhere curved
+      std::unique_ptr<TriangleSurface> bends;    // null: nowhere curved
       double                           side = 1; // -1: turned over
       std::string                      note;
       Tensor<1, 3>                     tool_velocity;
