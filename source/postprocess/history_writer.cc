@@ -25,7 +25,7 @@ namespace formsolve
       std::vector<std::string> directions()
       {
         return dim == 2 ? std::vector<std::string>{""}
-                        : std::vector<std::string>{"_0", "_45", "_90"};
+                        : std::vector<std::string>{"_x", "_diagonal", "_y"};
       }
 
       const std::vector<std::string> zone_columns = {"columns_safe",

@@ -224,8 +224,9 @@ namespace formsolve
       auto radius = [](const SheetColumn<dim> &c) {
         return dim == 2 ? c.mid[0] : std::hypot(c.mid[0], c.mid[1]);
       };
-      for (const double phi : (dim == 2 ? std::vector<double>{0.}
-                                        : std::vector<double>{0., 45., 90.}))
+      for (const double phi :
+           (dim == 2 ? std::vector<double>{0.}
+                     : std::vector<double>{0., diagonal, 90.}))
         {
           double r = nan, R = nan;
           for (std::size_t i = 0; i < rim.size(); ++i)

@@ -21,6 +21,12 @@ namespace formsolve
     template <int dim>
     SheetMeasures<dim>::SheetMeasures(const parameters::Run &prm)
         : t0(prm.geometry.thickness)
+        , diagonal(prm.geometry.blank_shape ==
+                       parameters::BlankShape::rectangle
+                     ? std::atan2(prm.geometry.blank_width,
+                                  prm.geometry.blank_length) *
+                         180 / M_PI
+                     : 45.)
         , flc(prm.material, prm.geometry.thickness)
     {}
 

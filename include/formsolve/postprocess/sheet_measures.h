@@ -55,9 +55,9 @@ namespace formsolve
       /// Lowest point of the sheet to the highest of its rim (mm).
       double cup_height   = 0;
       double blank_radius = 0; // largest reference radius
-      /// Rim radius (current, mm) and draw-in R0 - r per direction: 0, 45,
-      /// 90 degrees in 3-D (NaN outside the modelled part), one value in
-      /// axisymmetry.
+      /// Rim radius (current, mm) and draw-in R0 - r per direction: in 3-D
+      /// x, the diagonal (a rectangular blank's corner, else 45 degrees) and
+      /// y (NaN outside the modelled part); one value in axisymmetry.
       std::vector<double>         rim_radius, draw_in;
       std::array<unsigned int, 5> zone_count{}; // columns per safety zone
     };
@@ -123,6 +123,8 @@ namespace formsolve
       SheetSummary<dim> summarise();
 
       double                        t0;
+      /// The blank's diagonal: its corner's angle from x (degrees).
+      double                        diagonal;
       material::FormingLimit        flc;
       SheetSummary<dim>             sum;
       std::vector<SheetColumn<dim>> cols; // rank 0
