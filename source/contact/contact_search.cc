@@ -134,7 +134,9 @@ namespace formsolve
           for (unsigned int t = 0; t < tools.size(); ++t)
             {
               ContactPair<dim> pair;
-              pair.gap = tools[t].signed_distance(x, pair.normal);
+              pair.gap = tools[t].signed_distance_within(x,
+                                                         search_distance,
+                                                         pair.normal);
               if (pair.gap > search_distance)
                 continue;
               pair.node              = k;

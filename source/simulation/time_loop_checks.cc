@@ -8,6 +8,7 @@
 #include <formsolve/model/dimensions.h>
 #include <formsolve/simulation/time_loop.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -28,10 +29,14 @@ namespace formsolve
                   0.,
                   state.contact_state,
                   state.contact_set);
-      const double tol = 1e-6 * prm.geometry.thickness;
       for (unsigned int t = 0; t < state.tools.size(); ++t)
         {
-          double worst = 0;
+          // Within the allowed penetration the contact is as accurate as it
+          // will ever be: a meshed tool's smooth surface may bulge by that
+          // much where its face meets a radius.
+          const double tol   = std::max(1e-6 * prm.geometry.thickness,
+                                      state.tools.allowed_penetration(t));
+          double       worst = 0;
           for (const auto &p : state.contact_set.pairs)
             if (p.tool == t)
               worst = std::max(worst, -p.gap);

@@ -52,6 +52,15 @@ namespace formsolve
       return side * q.distance;
     }
 
+    double MeshTool::signed_distance_within(const Point<3> &p,
+                                            const double    reach,
+                                            Tensor<1, 3>   &normal) const
+    {
+      if (!faces.near(p - offset, reach))
+        return 2 * reach;
+      return signed_distance(p, normal);
+    }
+
     double MeshTool::distance_to_radius(const Point<3> &p) const
     {
       if (!bends)

@@ -237,6 +237,14 @@ namespace formsolve
       return {{1 - b1 - b2, b1, b2}};
     }
 
+    bool TriangleSurface::near(const Point<3> &p, const double reach) const
+    {
+      const Kernel::Iso_cuboid_3 box(
+        cgal(p - Tensor<1, 3>({reach, reach, reach})),
+        cgal(p + Tensor<1, 3>({reach, reach, reach})));
+      return tree->tree.do_intersect(box);
+    }
+
     TriangleSurface::Query TriangleSurface::closest(const Point<3> &p) const
     {
       const auto hit = tree->tree.closest_point_and_primitive(cgal(p));

@@ -31,8 +31,14 @@ namespace formsolve
       /// Said when the open surface's normals were turned to the sheet.
       const std::string &side_note() const { return note; }
 
-      double       signed_distance(const Point<3> &p,
-                                   Tensor<1, 3>   &normal) const override;
+      double signed_distance(const Point<3> &p,
+                             Tensor<1, 3>   &normal) const override;
+      /// Out of reach when no triangle meets the cube of half-size @p reach
+      /// about @p p (a box query of the tree, much cheaper than the closest
+      /// point far from the surface).
+      double       signed_distance_within(const Point<3> &p,
+                                          const double    reach,
+                                          Tensor<1, 3>   &normal) const override;
       double       distance_to_radius(const Point<3> &p) const override;
       Tensor<1, 3> velocity() const override { return tool_velocity; }
       void set_velocity(const Tensor<1, 3> &v) override { tool_velocity = v; }

@@ -28,6 +28,17 @@ namespace formsolve
       virtual double signed_distance(const Point<dim> &p,
                                      Tensor<1, dim>   &normal) const = 0;
 
+      /// signed_distance() where |d| < @p reach; elsewhere any value of at
+      /// least @p reach (and @p normal unset): tools whose query is costly
+      /// (meshes) skip points out of reach, such as the contact search's.
+      virtual double signed_distance_within(const Point<dim> &p,
+                                            const double      reach,
+                                            Tensor<1, dim>   &normal) const
+      {
+        (void)reach;
+        return signed_distance(p, normal);
+      }
+
       /// The point of the tool surface closest to @p p.
       Point<dim> closest_point(const Point<dim> &p) const
       {

@@ -39,6 +39,9 @@ namespace formsolve
         Tensor<1, 3> normal;
         unsigned int triangle = 0;
       };
+      /// Whether any triangle meets the cube of half-size @p reach about
+      /// @p p (every point within @p reach of the surface has one).
+      bool near(const Point<3> &p, const double reach) const;
       /// The triangles as they are (exact distance to the facets).
       Query closest(const Point<3> &p) const;
       /// The smooth surface the triangles stand for: normals interpolated
