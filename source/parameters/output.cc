@@ -1,3 +1,5 @@
+#include <deal.II/base/utilities.h>
+
 #include <formsolve/parameters/output.h>
 #include <formsolve/parameters/require.h>
 
@@ -57,6 +59,13 @@ namespace formsolve
         "<Output directory>/checkpoint, and always when the run ends or "
         "stops; 'formsolve case.prm --resume' continues from it. 0: only "
         "at the end.");
+      prm.declare_entry(
+        "Profile travels",
+        "",
+        List(Double(0)),
+        "Punch travels (mm, comma-separated) at which the sheet's columns "
+        "are also written as sheet_<travel>mm.csv (as sheet.csv at the end), "
+        "at the first step that reaches each travel.");
       prm.declare_entry("Revolved angle",
                         "270",
                         Double(1, 360),
@@ -76,6 +85,10 @@ namespace formsolve
       stop_at_fracture     = prm.get_bool("Stop at fracture");
       report               = prm.get_bool("Report");
       checkpoint_interval  = prm.get_integer("Checkpoint interval");
+      profile_travels.clear();
+      for (const auto &t :
+           dealii::Utilities::split_string_list(prm.get("Profile travels")))
+        profile_travels.push_back(dealii::Utilities::string_to_double(t));
       prm.leave_subsection();
     }
 

@@ -21,8 +21,7 @@ namespace formsolve
     template <int dim>
     SheetMeasures<dim>::SheetMeasures(const parameters::Run &prm)
         : t0(prm.geometry.thickness)
-        , diagonal(prm.geometry.blank_shape ==
-                       parameters::BlankShape::rectangle
+        , diagonal(prm.geometry.blank_shape == parameters::BlankShape::rectangle
                      ? std::atan2(prm.geometry.blank_width,
                                   prm.geometry.blank_length) *
                          180 / M_PI
@@ -256,7 +255,8 @@ namespace formsolve
     }
 
     template <int dim>
-    void SheetMeasures<dim>::write_csv(const std::string &directory) const
+    void SheetMeasures<dim>::write_csv(const std::string &directory,
+                                       const std::string &name) const
     {
       if (cols.empty())
         return; // not rank 0
@@ -275,7 +275,7 @@ namespace formsolve
       g << "# " << flc.source() << "\nminor_strain,major_strain\n";
       for (int i = -60; i <= 60; ++i)
         g << 0.01 * i << ',' << flc.major(0.01 * i) << '\n';
-      write_atomically(directory + "/sheet.csv",
+      write_atomically(directory + "/" + name,
                        [&](std::ostream &o) { o << f.str(); });
       write_atomically(directory + "/flc.csv",
                        [&](std::ostream &o) { o << g.str(); });

@@ -319,7 +319,16 @@ namespace formsolve
       history->write(state, report, stats, forming, wall);
 
       const double travel = state.tools.punch_travel();
-      const double force  = prm.geometry.symmetry_factor() *
+      // The sheet's columns at the profile travels this step reached.
+      for (const double p : prm.output.profile_travels)
+        if (travel - report.dt * prm.tools.punch_speed < p - 1e-9 &&
+            p <= travel + 1e-9)
+          {
+            std::ostringstream name;
+            name << "sheet_" << p << "mm.csv";
+            sheet.write_csv(prm.output.directory, name.str());
+          }
+      const double force = prm.geometry.symmetry_factor() *
                            stats.tool_force[state.tools.punch_index()][dim - 1];
       if (force > summary.peak_punch_force)
         {

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <vector>
 
 namespace formsolve
 {
@@ -13,14 +14,15 @@ namespace formsolve
 
     struct Output
     {
-      std::string  directory            = "results/cup-drawing";
-      unsigned int interval             = 5; // VTU every N steps (0: never)
-      bool         wall_time_in_history = true;
-      bool         revolved_copy        = false; // axisymmetric: 3-D VTU too
-      double       revolved_angle       = 270;   // degrees swept
-      bool         stop_at_fracture     = false; // end the run at fracture
-      bool         report               = true;  // report/ at the end
-      unsigned int checkpoint_interval  = 0;     // steps; 0: at the end only
+      std::string         directory = "results/cup-drawing";
+      unsigned int        interval  = 5; // VTU every N steps (0: never)
+      bool                wall_time_in_history = true;
+      bool                revolved_copy    = false; // axisymmetric: 3-D VTU too
+      double              revolved_angle   = 270;   // degrees swept
+      bool                stop_at_fracture = false; // end the run at fracture
+      bool                report           = true;  // report/ at the end
+      unsigned int        checkpoint_interval = 0;  // steps; 0: at the end only
+      std::vector<double> profile_travels; // mm: sheet_<travel>mm.csv there
 
       static void declare(ParameterHandler &prm);
       void        parse(ParameterHandler &prm);

@@ -85,7 +85,8 @@ namespace formsolve
       std::vector<NodalScalar> nodal_fields(const state::State<dim> &state);
 
       /// sheet.csv (one row per column) and flc.csv (the limit curve), rank 0.
-      void write_csv(const std::string &directory) const;
+      void write_csv(const std::string &directory,
+                     const std::string &name = "sheet.csv") const;
 
       /// The planform key of a reference position.
       static Key key(const dealii::Point<dim> &reference);
@@ -122,7 +123,7 @@ namespace formsolve
       /// exist).
       SheetSummary<dim> summarise();
 
-      double                        t0;
+      double t0;
       /// The blank's diagonal: its corner's angle from x (degrees).
       double                        diagonal;
       material::FormingLimit        flc;
