@@ -62,135 +62,164 @@ namespace formsolve
       return text;
     }
 
+    namespace
+    {
+      using EdgeMap = std::map<std::pair<unsigned int, unsigned int>,
+                               std::vector<unsigned int>>;
+
+      /// Drops the triangles without area (they carry no normal); returns
+      /// how many.
+      unsigned int drop_degenerate(SurfaceMesh &m)
+      {
+        const auto n_before = m.triangles.size();
+        const auto flat     = [&](const std::array<unsigned int, 3> &t) {
+          const Tensor<1, 3> a = m.vertices[t[1]] - m.vertices[t[0]],
+                             b = m.vertices[t[2]] - m.vertices[t[0]];
+          return !(cross_product_3d(a, b).norm() >
+                   1e-12 * (a.norm_square() + b.norm_square()));
+        };
+        m.triangles.erase(std::remove_if(m.triangles.begin(),
+                                         m.triangles.end(),
+                                         flat),
+                          m.triangles.end());
+        return n_before - m.triangles.size();
+      }
+
+      /// The triangles at each undirected edge; more than two is an error.
+      EdgeMap edges_of(const SurfaceMesh &m, const std::string &file)
+      {
+        EdgeMap edges;
+        for (unsigned int f = 0; f < m.triangles.size(); ++f)
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              const unsigned int a = m.triangles[f][k],
+                                 b = m.triangles[f][(k + 1) % 3];
+              auto &faces          = edges[{std::min(a, b), std::max(a, b)}];
+              faces.push_back(f);
+              AssertThrow(faces.size() <= 2,
+                          ExcMessage(file + ": three or more triangles share " +
+                                     edge_text(m, a, b) +
+                                     ", so the surface has no two sides "
+                                     "there; export the tool as one surface"));
+            }
+        return edges;
+      }
+
+      /// One connected part from @p seed, its triangles turned to agree with
+      /// the seed (@p turned marks them); whether it has a boundary edge.
+      std::vector<unsigned int> walk_part(SurfaceMesh       &m,
+                                          const EdgeMap     &edges,
+                                          const unsigned int seed,
+                                          std::vector<bool> &seen,
+                                          std::vector<bool> &turned,
+                                          bool              &open,
+                                          const std::string &file)
+      {
+        std::vector<unsigned int> members{seed}, stack{seed};
+        seen[seed] = true;
+        open       = false;
+        while (!stack.empty())
+          {
+            const unsigned int f = stack.back();
+            stack.pop_back();
+            for (unsigned int k = 0; k < 3; ++k)
+              {
+                const unsigned int a = m.triangles[f][k],
+                                   b = m.triangles[f][(k + 1) % 3];
+                const auto &faces = edges.at({std::min(a, b), std::max(a, b)});
+                if (faces.size() == 1)
+                  {
+                    open = true;
+                    continue;
+                  }
+                const unsigned int g = faces[0] == f ? faces[1] : faces[0];
+                // The neighbour must run from b to a.
+                const bool agrees = !runs_forward(m.triangles[g], a, b);
+                if (seen[g])
+                  {
+                    AssertThrow(agrees,
+                                ExcMessage(file +
+                                           ": the surface cannot be oriented "
+                                           "(one-sided, like a Moebius "
+                                           "strip) at " +
+                                           edge_text(m, a, b)));
+                    continue;
+                  }
+                seen[g] = true;
+                if (!agrees)
+                  {
+                    turn_over(m.triangles[g]);
+                    turned[g] = true;
+                  }
+                members.push_back(g);
+                stack.push_back(g);
+              }
+          }
+        return members;
+      }
+
+      /// Settles a walked part's side: an open part keeps the file's
+      /// majority, a closed one faces outwards (positive enclosed volume).
+      void settle_part(SurfaceMesh                     &m,
+                       const std::vector<unsigned int> &members,
+                       const std::vector<bool>         &turned,
+                       const bool                       open,
+                       SurfaceOrientation              &report)
+      {
+        unsigned int n_turned = 0;
+        for (const auto f : members)
+          n_turned += turned[f];
+        bool turn_all = 2 * n_turned > members.size();
+        if (open)
+          ++report.open_parts;
+        else
+          {
+            double volume = 0;
+            for (const auto f : members)
+              {
+                const auto &t = m.triangles[f];
+                volume += m.vertices[t[0]] *
+                          cross_product_3d(Tensor<1, 3>(m.vertices[t[1]]),
+                                           Tensor<1, 3>(m.vertices[t[2]]));
+              }
+            turn_all = volume < 0;
+          }
+        if (turn_all)
+          {
+            for (const auto f : members)
+              turn_over(m.triangles[f]);
+            n_turned = members.size() - n_turned;
+          }
+        // A closed part whose majority was turned was inside out; the rest
+        // disagreed with their neighbours.
+        if (2 * n_turned > members.size())
+          {
+            ++report.turned_out;
+            report.turned += members.size() - n_turned;
+          }
+        else
+          report.turned += n_turned;
+      }
+    } // namespace
+
     SurfaceOrientation orient(SurfaceMesh &m, const std::string &file)
     {
       SurfaceOrientation report;
-      // Triangles without area carry no normal.
-      const auto n_before = m.triangles.size();
-      m.triangles.erase(
-        std::remove_if(m.triangles.begin(),
-                       m.triangles.end(),
-                       [&](const std::array<unsigned int, 3> &t) {
-                         const auto n =
-                           cross_product_3d(m.vertices[t[1]] - m.vertices[t[0]],
-                                            m.vertices[t[2]] -
-                                              m.vertices[t[0]]);
-                         const double scale =
-                           (m.vertices[t[1]] - m.vertices[t[0]]).norm_square() +
-                           (m.vertices[t[2]] - m.vertices[t[0]]).norm_square();
-                         return !(n.norm() > 1e-12 * scale);
-                       }),
-        m.triangles.end());
-      report.degenerate = n_before - m.triangles.size();
+      report.degenerate = drop_degenerate(m);
       AssertThrow(!m.triangles.empty(),
                   ExcMessage(file + ": no triangle with an area"));
-
-      std::map<std::pair<unsigned int, unsigned int>, std::vector<unsigned int>>
-        edges;
-      for (unsigned int f = 0; f < m.triangles.size(); ++f)
-        for (unsigned int k = 0; k < 3; ++k)
-          {
-            const unsigned int a = m.triangles[f][k],
-                               b = m.triangles[f][(k + 1) % 3];
-            auto &faces          = edges[{std::min(a, b), std::max(a, b)}];
-            faces.push_back(f);
-            AssertThrow(faces.size() <= 2,
-                        ExcMessage(file + ": three or more triangles share " +
-                                   edge_text(m, a, b) +
-                                   ", so the surface has no two sides there; "
-                                   "export the tool as one surface"));
-          }
-
-      // Walk each part from a seed, turning neighbours to agree.
-      const unsigned int        n = m.triangles.size();
-      std::vector<int>          part(n, -1);
-      std::vector<bool>         turned(n, false);
-      std::vector<unsigned int> stack;
+      const EdgeMap     edges = edges_of(m, file);
+      const std::size_t n     = m.triangles.size();
+      std::vector<bool> seen(n, false), turned(n, false);
       for (unsigned int seed = 0; seed < n; ++seed)
-        {
-          if (part[seed] >= 0)
-            continue;
-          const int                 id = report.parts++;
-          std::vector<unsigned int> members{seed};
-          bool                      open = false;
-          part[seed]                     = id;
-          stack.push_back(seed);
-          while (!stack.empty())
-            {
-              const unsigned int f = stack.back();
-              stack.pop_back();
-              for (unsigned int k = 0; k < 3; ++k)
-                {
-                  const unsigned int a = m.triangles[f][k],
-                                     b = m.triangles[f][(k + 1) % 3];
-                  const auto &faces = edges[{std::min(a, b), std::max(a, b)}];
-                  if (faces.size() == 1)
-                    {
-                      open = true;
-                      continue;
-                    }
-                  const unsigned int g = faces[0] == f ? faces[1] : faces[0];
-                  // The neighbour must run from b to a.
-                  const bool agrees = !runs_forward(m.triangles[g], a, b);
-                  if (part[g] < 0)
-                    {
-                      part[g] = id;
-                      if (!agrees)
-                        {
-                          turn_over(m.triangles[g]);
-                          turned[g] = true;
-                        }
-                      members.push_back(g);
-                      stack.push_back(g);
-                    }
-                  else
-                    AssertThrow(agrees,
-                                ExcMessage(file +
-                                           ": the surface cannot be "
-                                           "oriented (one-sided, like a "
-                                           "Moebius strip) at " +
-                                           edge_text(m, a, b)));
-                }
-            }
-          // Keep the file's majority in an open part; a closed part faces
-          // outwards (positive enclosed volume).
-          unsigned int n_turned = 0;
-          for (const auto f : members)
-            n_turned += turned[f];
-          bool turn_all = false;
-          if (open)
-            {
-              ++report.open_parts;
-              turn_all = 2 * n_turned > members.size();
-            }
-          else
-            {
-              double volume = 0;
-              for (const auto f : members)
-                {
-                  const auto &t = m.triangles[f];
-                  volume += m.vertices[t[0]] *
-                            cross_product_3d(Tensor<1, 3>(m.vertices[t[1]]),
-                                             Tensor<1, 3>(m.vertices[t[2]]));
-                }
-              turn_all = volume < 0;
-            }
-          if (turn_all)
-            {
-              for (const auto f : members)
-                turn_over(m.triangles[f]);
-              n_turned = members.size() - n_turned;
-            }
-          // A closed part whose majority was turned was inside out; the
-          // rest disagreed with their neighbours.
-          if (2 * n_turned > members.size())
-            {
-              ++report.turned_out;
-              report.turned += members.size() - n_turned;
-            }
-          else
-            report.turned += n_turned;
-        }
+        if (!seen[seed])
+          {
+            bool       open = false;
+            const auto members =
+              walk_part(m, edges, seed, seen, turned, open, file);
+            ++report.parts;
+            settle_part(m, members, turned, open, report);
+          }
       return report;
     }
   } // namespace tools

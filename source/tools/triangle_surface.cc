@@ -59,6 +59,33 @@ namespace formsolve
         const Tensor<1, 3> b = x[t[(k + 2) % 3]] - x[t[k]];
         return std::acos(std::clamp(a * b / (a.norm() * b.norm()), -1., 1.));
       }
+      /// Each directed edge (v0, v1) of the triangles, as 3 f + k. A
+      /// directed edge used twice means two neighbours whose normals point
+      /// to opposite sides; three triangles on one edge have no side at all.
+      std::map<std::pair<unsigned int, unsigned int>, unsigned int>
+      directed_edges(const std::vector<Point<3>>                    &vertices,
+                     const std::vector<std::array<unsigned int, 3>> &faces,
+                     const std::string                              &name)
+      {
+        std::map<std::pair<unsigned int, unsigned int>, unsigned int> directed;
+        for (unsigned int f = 0; f < faces.size(); ++f)
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              const auto e = std::make_pair(faces[f][k], faces[f][(k + 1) % 3]);
+              AssertThrow(directed.count(e) == 0,
+                          ExcMessage(
+                            name +
+                            ": the triangles are not consistently "
+                            "oriented (two neighbours at the edge from " +
+                            where(vertices[e.first]) + " to " +
+                            where(vertices[e.second]) +
+                            " point to opposite sides), or three triangles "
+                            "share that edge; orient the surface so that "
+                            "every normal points to the working side"));
+              directed[e] = 3 * f + k;
+            }
+        return directed;
+      }
     } // namespace
 
     struct TriangleSurface::Tree
@@ -95,26 +122,7 @@ namespace formsolve
       AssertThrow(!faces.empty(),
                   ExcMessage(name + ": no triangle with an area"));
 
-      // Orientation: a directed edge used twice means two neighbours whose
-      // normals point to opposite sides; three triangles on one edge have
-      // no side at all.
-      std::map<std::pair<unsigned int, unsigned int>, unsigned int> directed;
-      for (unsigned int f = 0; f < faces.size(); ++f)
-        for (unsigned int k = 0; k < 3; ++k)
-          {
-            const auto e = std::make_pair(faces[f][k], faces[f][(k + 1) % 3]);
-            AssertThrow(directed.count(e) == 0,
-                        ExcMessage(
-                          name +
-                          ": the triangles are not consistently "
-                          "oriented (two neighbours at the edge from " +
-                          where(vertices[e.first]) + " to " +
-                          where(vertices[e.second]) +
-                          " point to opposite sides), or three triangles "
-                          "share that edge; orient the surface so that every "
-                          "normal points to the working side"));
-            directed[e] = 3 * f + k;
-          }
+      const auto directed = directed_edges(vertices, faces, name);
 
       constexpr unsigned int none = static_cast<unsigned int>(-1);
       vertex_normal.assign(vertices.size(), Tensor<1, 3>());
