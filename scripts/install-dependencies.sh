@@ -6,9 +6,10 @@ packages=(
   cmake make g++ libdeal.ii-dev     # deal.II 9.4 with Trilinos, p4est, PETSc, MPI, gmsh
   libmumps-dev libmetis-dev         # MUMPS C interface and METIS, called directly
   libcgal-dev                       # AABB trees of triangulated tool surfaces
+  libgmsh-dev                       # gmsh.h: tool surfaces from .msh, .geo, STEP, IGES
   libopenblas0-serial               # optimised BLAS for MUMPS (reference libblas3 is ~4x slower)
   openmpi-bin                       # mpirun
-  gmsh                              # meshing .geo planforms
+  gmsh                              # meshing .geo planforms and tool solids
   numdiff                           # regression comparisons
   python3-vtk9 python3-numpy        # VTU read-back test
   python3-matplotlib                # benchmark charts, run report
