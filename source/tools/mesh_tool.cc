@@ -74,12 +74,26 @@ namespace formsolve
       travelled += dt * tool_velocity.norm();
     }
 
-    ToolSurface<3> MeshTool::surface(const SurfaceExtent &) const
+    ToolSurface<3> MeshTool::surface(const SurfaceExtent &extent) const
     {
+      // The part of the tool over the modelled range of angles and within
+      // the reach, as the analytic tools are drawn: a quarter model's
+      // output, mirrored by the viewer, shows the whole tool once.
       ToolSurface<3> s;
       for (const auto &x : faces.points())
         s.points.push_back(x + offset);
-      s.triangles = faces.triangles();
+      const double full = extent.last_angle - extent.first_angle >= 360;
+      for (const auto &t : faces.triangles())
+        {
+          const Point<3> c =
+            (s.points[t[0]] + s.points[t[1]] + s.points[t[2]]) / 3.;
+          double angle = std::atan2(c[1], c[0]) * 180 / M_PI;
+          if (angle < extent.first_angle - 1e-9)
+            angle += 360;
+          if (std::hypot(c[0], c[1]) <= extent.reach &&
+              (full || angle <= extent.last_angle + 1e-9))
+            s.triangles.push_back(t);
+        }
       return s;
     }
 
