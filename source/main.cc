@@ -72,7 +72,11 @@ int main(int argc, char **argv)
           if (root && cl.print_parameters)
             formsolve::parameters::write_parameter_file(prm, std::cout);
           else if (root)
-            formsolve::parameters::write_manual(prm, std::cout);
+            {
+              // One additional tool shows the entries each of them has.
+              formsolve::parameters::Tools::declare_additional(prm, {"<name>"});
+              formsolve::parameters::write_manual(prm, std::cout);
+            }
           return 0;
         }
       AssertThrow(!cl.input_file.empty(),

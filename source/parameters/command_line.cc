@@ -2,6 +2,7 @@
 
 #include <formsolve/parameters/command_line.h>
 #include <formsolve/parameters/input_check.h>
+#include <formsolve/parameters/tools.h>
 
 #include <filesystem>
 #include <fstream>
@@ -146,11 +147,13 @@ namespace formsolve
       // relative to the working directory.
       std::vector<SourceLine> lines;
       expand_includes(std::filesystem::absolute(cl.input_file), 0, lines);
-      const DeclaredSection tree = declared(prm);
-      check_input(tree, lines);
       std::string text;
       for (const auto &l : lines)
         text += l.text + '\n';
+      // The additional tools' subsections exist once their names are known.
+      Tools::declare_additional(prm, additional_tool_names(text, cl.overrides));
+      const DeclaredSection tree = declared(prm);
+      check_input(tree, lines);
       try
         {
           prm.parse_input_from_string(text,

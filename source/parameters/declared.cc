@@ -3,6 +3,7 @@
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 
+#include <cctype>
 #include <sstream>
 
 namespace formsolve
@@ -84,7 +85,9 @@ namespace formsolve
     {
       std::string d;
       for (std::size_t i = 0; i < s.size(); ++i)
-        if (s[i] == '_' && i + 2 < s.size())
+        if (s[i] == '_' && i + 2 < s.size() &&
+            std::isxdigit(static_cast<unsigned char>(s[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(s[i + 2])))
           {
             d += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
             i += 2;

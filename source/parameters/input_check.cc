@@ -86,8 +86,13 @@ namespace formsolve
         std::string list;
         for (const auto &n : names)
           list += (list.empty() ? "" : ", ") + n;
-        return m + " (declared " + (what == "entry" ? "entries" : what + "s") +
-               " there: " + (list.empty() ? "none" : list) + ")";
+        m += " (declared " + (what == "entry" ? "entries" : what + "s") +
+             " there: " + (list.empty() ? "none" : list) + ")";
+        // A tool's subsection exists once the tool is listed.
+        if (what == "subsection" && join_path(path) == "Tools")
+          m += "; a tool besides Punch, Die and Blank holder must be named in "
+               "Tools/Additional tools";
+        return m;
       }
 
       /// accepted_values() in a sentence: "real in [0, 1]" -> "a number from

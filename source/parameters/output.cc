@@ -64,8 +64,8 @@ namespace formsolve
         "",
         List(Double(0)),
         "Punch travels (mm, comma-separated) at which the sheet's columns "
-        "are also written as sheet_<travel>mm.csv (as sheet.csv at the end), "
-        "at the first step that reaches each travel.");
+        "are also written as sheet_<travel>mm.csv (as sheet.csv at the end); "
+        "a step ends on each of them.");
       prm.declare_entry("Revolved angle",
                         "270",
                         Double(1, 360),

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace formsolve
 {
@@ -146,12 +147,28 @@ namespace formsolve
       output.validate();
 
       const bool axi = geometry.model == model::Model::axisymmetric;
-      for (const Tool *t : {&tools.punch, &tools.die, &tools.blank_holder})
-        require(!axi || !t->enabled ||
-                  (t->shape != ToolShape::rounded_rectangle &&
-                   t->shape != ToolShape::mesh),
-                "Tools/" + t->name + "/Shape",
-                "must be round or flat for Geometry/Model = axisymmetric");
+      for (const auto &t : tools.additional)
+        t.validate(axi,
+                   model::symmetric_in_x(geometry.model),
+                   model::symmetric_in_y(geometry.model));
+      std::vector<const Tool *> all = {&tools.punch,
+                                       &tools.die,
+                                       &tools.blank_holder};
+      for (const auto &t : tools.additional)
+        all.push_back(&t);
+      for (const Tool *t : all)
+        {
+          require(!axi || !t->enabled ||
+                    t->shape != ToolShape::rounded_rectangle,
+                  "Tools/" + t->name + "/Shape",
+                  "must be round, flat or mesh (an r-z profile) for "
+                  "Geometry/Model = axisymmetric");
+          require(!axi || !t->enabled || t->shape != ToolShape::mesh ||
+                    (t->mesh_offset[0] == 0 && t->mesh_offset[1] == 0),
+                  "Tools/" + t->name + "/Mesh offset",
+                  "the axisymmetric model moves a profile along z only "
+                  "(give 0, 0, z)");
+        }
       if (tools.die.enabled && tools.die.shape == ToolShape::round &&
           geometry.blank_shape == BlankShape::round)
         require(

@@ -48,6 +48,11 @@ namespace formsolve
         c.push_back("ironing_force");
         if (tools.holder_index() != tools::ToolSet<dim>::none)
           c.insert(c.end(), {"holder_displacement", "holder_engaged"});
+        // Additional tools: where each is along its direction, and the force
+        // it exerts on the sheet along it (the set force under control).
+        for (unsigned int t = tools.first_additional(); t < tools.size(); ++t)
+          c.insert(c.end(),
+                   {"position_" + tools.key(t), "force_along_" + tools.key(t)});
         c.push_back("max_equivalent_strain");
         const auto where = coordinates<dim>();
         c.insert(c.end(),
@@ -91,7 +96,8 @@ namespace formsolve
                                       "time_step",
                                       "cutbacks",
                                       "max_penetration",
-                                      "mean_penetration"};
+                                      "mean_penetration",
+                                      "force_imbalance_z"};
         for (unsigned int t = 0; t < tools.size(); ++t)
           c.push_back("max_penetration_" + tools.key(t));
         c.insert(c.end(),
@@ -158,8 +164,27 @@ namespace formsolve
         {
           table.set("holder_displacement",
                     tools[tools.holder_index()].displacement()[z]);
-          table.set("holder_engaged", state.holder.force_control ? 1 : 0);
+          const auto *control = state.force_control(tools.holder_index());
+          table.set("holder_engaged", control && control->active ? 1 : 0);
         }
+      double sum_z = 0, magnitude_z = 0;
+      for (unsigned int t = 0; t < tools.size(); ++t)
+        {
+          sum_z += stats.tool_force[t][z];
+          magnitude_z += std::abs(stats.tool_force[t][z]);
+        }
+      for (unsigned int t = tools.first_additional(); t < tools.size(); ++t)
+        {
+          const Tensor<1, dim> &d = tools.motion(t).direction;
+          table.set("position_" + tools.key(t), tools[t].displacement() * d);
+          table.set("force_along_" + tools.key(t),
+                    -sym * (stats.tool_force[t] * d));
+        }
+      // The sheet's equilibrium along z, where nothing but the tools holds
+      // it: the tools' z forces sum to zero within Newton's tolerance. As a
+      // fraction of their magnitudes, so that round-off stays below 1e-10.
+      solver_table.set("force_imbalance_z",
+                       magnitude_z > 0 ? sum_z / magnitude_z : 0.);
       solver_table.set("max_penetration", stats.max_penetration);
       solver_table.set("mean_penetration", stats.mean_penetration);
       for (unsigned int t = 0; t < tools.size(); ++t)

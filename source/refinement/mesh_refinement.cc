@@ -26,10 +26,11 @@ namespace formsolve
     {
       for (unsigned int t = 0; t < tools.size(); ++t)
         {
-          const std::string &key = tools.key(t);
-          tool_level.push_back(key == "punch" ? p.punch_level
-                               : key == "die" ? p.die_level
-                                              : p.holder_level);
+          tool_level.push_back(t == tools.punch_index() ? p.punch_level
+                               : t == tools.die_index() ? p.die_level
+                               : t == tools.holder_index()
+                                 ? p.holder_level
+                                 : tools.refinement_level(t));
         }
     }
 

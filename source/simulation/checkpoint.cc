@@ -147,10 +147,13 @@ namespace formsolve
               all[key + ".travel"]   = exact_text(state.tools[t].travel());
               all[key + ".velocity"] = text<dim>(state.tools[t].velocity());
             }
-          all["holder.force_control"] =
-            std::to_string(state.holder.force_control);
+          for (const auto &f : state.force_controls)
+            {
+              const auto key         = "control." + std::to_string(f.tool);
+              all[key + ".active"]   = std::to_string(f.active);
+              all[key + ".velocity"] = exact_text(f.velocity);
+            }
           all["holder.released"] = std::to_string(state.holder.released);
-          all["holder.velocity"] = exact_text(state.holder.velocity);
           all["holder.release_travel"] =
             exact_text(state.holder.release_travel);
           std::ofstream m(fresh + "/meta.txt");
@@ -261,9 +264,13 @@ namespace formsolve
                               std::stod(meta.at(key + ".travel")),
                               tensor<dim>(meta.at(key + ".velocity")));
         }
-      state.holder.force_control  = meta.at("holder.force_control") == "1";
+      for (auto &f : state.force_controls)
+        {
+          const auto key = "control." + std::to_string(f.tool);
+          f.active       = meta.at(key + ".active") == "1";
+          f.velocity     = std::stod(meta.at(key + ".velocity"));
+        }
       state.holder.released       = meta.at("holder.released") == "1";
-      state.holder.velocity       = std::stod(meta.at("holder.velocity"));
       state.holder.release_travel = std::stod(meta.at("holder.release_travel"));
       state.update_contact_areas();
       return meta;

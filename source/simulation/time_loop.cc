@@ -101,10 +101,13 @@ namespace formsolve
           (narrow || state.min_distance(holder) > prm.contact.search_distance))
         {
           state.holder.released       = true;
-          state.holder.force_control  = false;
-          state.holder.velocity       = 0;
           state.holder.release_travel = tools.punch_travel();
-          tools.set_axial_velocity(holder, 0.);
+          if (auto *control = state.force_control(holder))
+            {
+              control->active   = false;
+              control->velocity = 0;
+            }
+          tools.set_speed_along(holder, 0.);
           pcout << "blank holder released at punch travel " << travel.str()
                 << (narrow ? ": the flange under it is narrower than half "
                              "the sheet thickness"
@@ -247,9 +250,14 @@ namespace formsolve
     {
       auto        &tools  = state.tools;
       const double stroke = tools.punch_stroke(), speed = tools.punch_speed();
+      // The step ends at the stroke, and on each profile travel, so that a
+      // profile is of the travel asked for.
+      double max_dt = (stroke - tools.punch_travel()) / speed;
+      for (const double p : prm.output.profile_travels)
+        if (p > tools.punch_travel() + 1e-9)
+          max_dt = std::min(max_dt, (p - tools.punch_travel()) / speed);
       const double newton_start = seconds();
-      const auto   report =
-        step_solver.solve((stroke - tools.punch_travel()) / speed);
+      const auto   report       = step_solver.solve(max_dt);
       summary.newton_wall_time += seconds() - newton_start;
       summary.newton_iterations += report.iterations;
       summary.linear_iterations += report.linear_iterations;

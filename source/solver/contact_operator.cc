@@ -42,12 +42,8 @@ namespace formsolve
     }
 
     template <int dim>
-    void ContactOperator<dim>::find_pairs(const VectorType &v,
-                                          const double      w,
-                                          const double      dt)
+    void ContactOperator<dim>::find_pairs(const VectorType &v, const double dt)
     {
-      if (state.holder.force_control)
-        state.tools.set_axial_velocity(state.tools.holder_index(), w);
       search_.evaluate(state.tools,
                        state.displacement_ghost,
                        v,
@@ -57,12 +53,10 @@ namespace formsolve
     }
 
     template <int dim>
-    void ContactOperator<dim>::search(const VectorType &v,
-                                      const double      w,
-                                      const double      dt)
+    void ContactOperator<dim>::search(const VectorType &v, const double dt)
     {
       TimerOutput::Scope t(timer, "contact");
-      find_pairs(v, w, dt);
+      find_pairs(v, dt);
       state.contact_state.track_status(state.contact_set,
                                        prm.contact.max_status_flips);
     }
@@ -70,14 +64,13 @@ namespace formsolve
     template <int dim>
     void ContactOperator<dim>::predict(VectorType  &v,
                                        VectorType  &ghost,
-                                       const double w,
                                        const double dt)
     {
       TimerOutput::Scope t(timer, "contact");
       // No status tracking: the status of the previous solve is what
       // keep_contact() reads.
       ghost = v;
-      find_pairs(ghost, w, dt);
+      find_pairs(ghost, dt);
       VectorType change(state.owned, state.comm);
       contact::keep_contact(state.contact_set,
                             state.contact_state,

@@ -58,7 +58,10 @@ namespace formsolve
         v->reinit(state.owned, state.comm);
       ghost.reinit(state.owned, state.relevant, state.comm);
       factor_reuse.reinit(state.owned, state.comm);
-      holder.reinit(state.owned, state.comm);
+      std::vector<unsigned int> held;
+      for (const auto &f : state.force_controls)
+        held.push_back(f.tool);
+      forces.reinit(held, state.owned, state.comm);
       contact.reinit();
       linear_solver = create_linear_solver(prm.linear, prm.symmetric_tangent());
       linear_solver->time_phases(timer);
@@ -81,7 +84,7 @@ namespace formsolve
     {
       contact.begin_solve();
       factor_reuse.begin_solve();
-      holder.begin_solve(state.holder.velocity);
+      forces.begin_solve(state.control_velocities(), state.active_controls());
       iterate   = &state.velocity;
       direction = 0;
     }
@@ -90,7 +93,10 @@ namespace formsolve
     void FormingProblem<dim>::predict(VectorType &v)
     {
       if (prm.nonlinear.predictor == parameters::Predictor::keep_contact)
-        contact.predict(v, ghost, state.holder.velocity, dt);
+        {
+          forces.move_tools(state.control_velocities(), state.tools);
+          contact.predict(v, ghost, dt);
+        }
     }
 
     template <int dim>
@@ -103,7 +109,8 @@ namespace formsolve
       point.kind          = kind;
       point.tangent       = with_tangent;
       ghost               = v;
-      contact.search(ghost, holder.trial_velocity(), dt);
+      forces.move_tools(forces.trial_velocities(), state.tools);
+      contact.search(ghost, dt);
       {
         // Separate sections: the cost per cell of each kind is measured
         // (doc/convergence.md).
@@ -153,15 +160,20 @@ namespace formsolve
                   newton(point.kind));
       if (with_tangent)
         matrix_has_contact = true;
-      if (holder_controlled())
-        holder.assemble(state.contact_set,
-                        contact.factors(),
-                        state.tools,
-                        prm.contact.regularisation_velocity,
-                        dt,
-                        newton(point.kind),
-                        state.constraints,
-                        state.holder.target);
+      if (controlled())
+        {
+          std::vector<double> targets;
+          for (const auto &f : state.force_controls)
+            targets.push_back(f.target);
+          forces.assemble(state.contact_set,
+                          contact.factors(),
+                          state.tools,
+                          prm.contact.regularisation_velocity,
+                          dt,
+                          newton(point.kind),
+                          state.constraints,
+                          targets);
+        }
     }
 
     template <int dim>
@@ -225,7 +237,7 @@ namespace formsolve
       point.velocity = *iterate;
       point.velocity.add(alpha, direction);
       point.accepted = false;
-      holder.set_step_length(alpha);
+      forces.set_step_length(alpha);
       const double r        = assemble(point.velocity,
                                 kind,
                                 tangent_now || kind == Linearisation::exact);
@@ -255,7 +267,7 @@ namespace formsolve
     {
       *iterate       = point.velocity;
       point.accepted = true;
-      holder.accept();
+      forces.accept();
       body.accept(state.comm, prm.nonlinear.log_iterations);
       Accepted     a;
       const double r       = update_penalty();
@@ -288,38 +300,44 @@ namespace formsolve
         step_condition = std::max(
           step_condition,
           estimate_condition(matrix, rhs, prm.linear.condition_iterations));
-      // Bordered system (the holder under force control): the holder's
-      // column K z = b with the same factors, in the same solve. The first
+      // Bordered system (tools under force control): their columns
+      // K z_j = b_j with the same factors, in the same solve. The first
       // correction of a step comes from the secant tangent (dual reset),
       // under which the sheet below the holder is 5-10x softer than in
       // Newton's: the Schur complement (e - c^T K^-1 b) is then 2e-4 e, and
-      // dw about 100x the holder's speed. The holder keeps its velocity for
-      // that one correction (doc/theory.md section 6a), and K^-1 b is not
-      // needed.
-      const bool bordered =
-        holder_controlled() && holder.engaged() && corrections > 0;
+      // du about 100x the holder's speed. The tools keep their velocities
+      // for that one correction (doc/theory.md section 6a), and K^-1 b is
+      // not needed.
+      std::vector<unsigned int> bordered;
+      for (unsigned int j = 0; j < forces.size(); ++j)
+        if (forces.active(j) && forces.engaged(j) && corrections > 0)
+          bordered.push_back(j);
+        else
+          forces.hold_or_close(j,
+                               state.tools.allowed_penetration(forces.tool(j)),
+                               dt);
       unsigned int its = 0;
-      if (bordered)
+      if (bordered.empty())
+        its = linear_solver->solve(matrix, dv, rhs, factor_reuse.may_reuse());
+      else
         {
-          VectorType z(state.owned, state.comm);
+          std::vector<VectorType> z(bordered.size(),
+                                    VectorType(state.owned, state.comm));
           its = linear_solver->solve_pair(matrix,
                                           dv,
                                           rhs,
-                                          z,
-                                          holder.column(),
+                                          z[0],
+                                          forces.column(bordered[0]),
                                           factor_reuse.may_reuse());
-          holder.set_correction(holder.correction(dv, z));
-          dv.add(-holder.last_correction(), z);
-        }
-      else
-        {
-          its = linear_solver->solve(matrix, dv, rhs, factor_reuse.may_reuse());
-          holder.set_correction(
-            holder_controlled() && !holder.engaged()
-              ? holder.closing_correction(state.tools.allowed_penetration(
-                                            state.tools.holder_index()),
-                                          dt)
-              : 0.);
+          // More tools: more columns with the factors of this matrix.
+          for (unsigned int i = 1; i < bordered.size(); ++i)
+            its += linear_solver->solve(matrix,
+                                        z[i],
+                                        forces.column(bordered[i]),
+                                        true);
+          forces.correct(bordered, dv, z);
+          for (unsigned int i = 0; i < bordered.size(); ++i)
+            dv.add(forces.correction(bordered[i]), z[i]);
         }
       ++corrections;
       if (linear_solver->factorisations() != factorised)
@@ -333,10 +351,14 @@ namespace formsolve
     template <int dim>
     double FormingProblem<dim>::extra_correction() const
     {
-      return holder_controlled() ? std::abs(holder.last_correction()) /
-                                     std::max(std::abs(holder.velocity()),
-                                              state.tools.punch_speed())
-                                 : 0.;
+      double largest = 0;
+      for (unsigned int j = 0; j < forces.size(); ++j)
+        if (forces.active(j))
+          largest = std::max(largest,
+                             std::abs(forces.correction(j)) /
+                               std::max(std::abs(forces.velocity(j)),
+                                        state.tools.punch_speed()));
+      return largest;
     }
 
     template <int dim>
@@ -345,11 +367,15 @@ namespace formsolve
       Evaluation e;
       e.residual = r;
       // rho is a force (N), as the nodal entries of r.
-      e.extra          = holder_controlled() ? std::abs(holder.residual()) : 0.;
-      e.extra_relative = holder_controlled()
-                           ? std::abs(holder.residual()) / state.holder.target
-                           : 0.;
-      e.scale          = f_scale;
+      for (unsigned int j = 0; j < forces.size(); ++j)
+        if (forces.active(j))
+          {
+            const double rho = std::abs(forces.residual(j));
+            e.extra          = std::max(e.extra, rho);
+            e.extra_relative =
+              std::max(e.extra_relative, rho / state.force_controls[j].target);
+          }
+      e.scale = f_scale;
       return e;
     }
 
@@ -357,9 +383,13 @@ namespace formsolve
     double
     FormingProblem<dim>::directional_derivative(const VectorType &dv) const
     {
-      return residual * dv + (holder_controlled()
-                                ? holder.last_correction() * holder.residual()
-                                : 0.);
+      // rho_j falls as u_j grows (e_j >= 0): -du_j rho_j, negative along a
+      // Newton direction, as r . dv.
+      double slope = residual * dv;
+      for (unsigned int j = 0; j < forces.size(); ++j)
+        if (forces.active(j))
+          slope -= forces.correction(j) * forces.residual(j);
+      return slope;
     }
 
     template <int dim>
@@ -373,9 +403,11 @@ namespace formsolve
           s << "  rigid points: " << c[0] << " (+" << c[1] << "/-" << c[2]
             << ")";
         }
-      if (holder_controlled())
-        s << "  holder: w=" << holder.velocity()
-          << " mm/s, F-F_set=" << -holder.residual() << " N";
+      for (unsigned int j = 0; j < forces.size(); ++j)
+        if (forces.active(j))
+          s << "  " << state.tools.key(forces.tool(j))
+            << ": u=" << forces.velocity(j)
+            << " mm/s, F-F_set=" << -forces.residual(j) << " N";
       return s.str();
     }
 

@@ -39,6 +39,7 @@ namespace formsolve
         {
           const double              dt = std::min(control.time_step(), max_dt);
           const state::StepSnapshot start = state.snapshot();
+          state.tools.begin_step(dt);
           system.begin_step(dt);
           // The previous step's velocity is the predictor, corrected where
           // it lifts nodes in contact off their tools.
@@ -63,7 +64,8 @@ namespace formsolve
               attempt.picard_iterations += r.picard_iterations;
               if (!r.converged)
                 break;
-              state.holder.velocity = system.holder_velocity();
+              for (unsigned int j = 0; j < state.force_controls.size(); ++j)
+                state.force_controls[j].velocity = system.control_velocity(j);
               system.end_solve();
               // adaptive-strict: solve again while a node is deeper than
               // delta; augmented-lagrangian: update the multipliers, likewise.

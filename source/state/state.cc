@@ -28,12 +28,9 @@ namespace formsolve
         , reference_mapping(run.mesh.degree)
         , tools(run.tools, run.contact, run.geometry.thickness)
     {
-      const bool control =
-        run.tools.blank_holder.enabled &&
-        run.tools.holder_control == parameters::HolderControl::force;
-      holder.force_control = control;
-      holder.target =
-        control ? run.tools.holder_force / run.geometry.symmetry_factor() : 0.;
+      for (const unsigned int t : tools.force_controlled())
+        force_controls.push_back(
+          {t, tools.motion(t).force / run.geometry.symmetry_factor()});
     }
 
     template <int dim>
@@ -121,15 +118,52 @@ namespace formsolve
     template <int dim>
     StepSnapshot State<dim>::snapshot() const
     {
-      return StepSnapshot{velocity, contact_state, holder.velocity};
+      return StepSnapshot{velocity, contact_state, control_velocities()};
     }
 
     template <int dim>
     void State<dim>::restore(const StepSnapshot &s)
     {
-      velocity        = s.velocity;
-      contact_state   = s.contact_state;
-      holder.velocity = s.holder_velocity;
+      velocity      = s.velocity;
+      contact_state = s.contact_state;
+      for (unsigned int j = 0; j < force_controls.size(); ++j)
+        force_controls[j].velocity = s.control_velocities[j];
+    }
+
+    template <int dim>
+    ForceControl *State<dim>::force_control(const unsigned int t)
+    {
+      for (auto &c : force_controls)
+        if (c.tool == t)
+          return &c;
+      return nullptr;
+    }
+
+    template <int dim>
+    const ForceControl *State<dim>::force_control(const unsigned int t) const
+    {
+      for (const auto &c : force_controls)
+        if (c.tool == t)
+          return &c;
+      return nullptr;
+    }
+
+    template <int dim>
+    std::vector<double> State<dim>::control_velocities() const
+    {
+      std::vector<double> u;
+      for (const auto &c : force_controls)
+        u.push_back(c.velocity);
+      return u;
+    }
+
+    template <int dim>
+    std::vector<bool> State<dim>::active_controls() const
+    {
+      std::vector<bool> on;
+      for (const auto &c : force_controls)
+        on.push_back(c.active);
+      return on;
     }
 
     template <int dim>

@@ -1,11 +1,13 @@
 // Tool surfaces through the gmsh library: its meshes, and CAD geometry it
-// meshes with OpenCASCADE.
+// meshes with OpenCASCADE; and the lines of an axisymmetric tool's profile.
 #include <deal.II/base/exceptions.h>
 
+#include <formsolve/tools/profile_file.h>
 #include <formsolve/tools/surface_file.h>
 
 #include <gmsh.h>
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -118,6 +120,67 @@ namespace formsolve
                              "': no surface triangles or quadrilaterals in "
                              "it"));
       return m;
+    }
+
+    ProfileLines read_profile_with_gmsh(const std::string &file,
+                                        const double       facet_size)
+    {
+      AssertThrow(std::filesystem::is_regular_file(file),
+                  ExcMessage("tool profile file '" + file + "': no such file"));
+      const bool  is_mesh = std::filesystem::path(file).extension() == ".msh";
+      GmshSession session;
+      gmsh_checked(file, "reading", [&] { gmsh::open(file); });
+      if (!is_mesh)
+        gmsh_checked(file, "meshing the curves", [&] {
+          gmsh::option::setNumber("Mesh.MeshSizeMax", facet_size);
+          gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1 * facet_size);
+          gmsh::model::mesh::generate(1);
+        });
+      std::vector<std::size_t> tags, elements, nodes;
+      std::vector<double>      x, parametric;
+      gmsh_checked(file, "reading the nodes", [&] {
+        gmsh::model::mesh::getNodes(tags, x, parametric, -1, -1, false, false);
+      });
+      // The plane the profile is drawn in: y = 0 (x-z) or z = 0 (x-y).
+      double span[3] = {0, 0, 0};
+      for (std::size_t i = 0; i < tags.size(); ++i)
+        for (unsigned int d = 0; d < 3; ++d)
+          span[d] = std::max(span[d], std::abs(x[3 * i + d]));
+      AssertThrow(span[1] == 0 || span[2] == 0,
+                  ExcMessage("tool profile file '" + file +
+                             "': the profile must lie in the x-z plane "
+                             "(y = 0) or in the x-y plane (z = 0)"));
+      const unsigned int                  axial = span[1] == 0 ? 2 : 1;
+      ProfileLines                        p;
+      std::map<std::size_t, unsigned int> index;
+      for (std::size_t i = 0; i < tags.size(); ++i)
+        {
+          index[tags[i]] = p.points.size();
+          p.points.emplace_back(x[3 * i], x[3 * i + axial]);
+        }
+      // gmsh element types: 1 two-node line, 8 three-node line (ends first).
+      for (const auto &[type, stride] :
+           std::vector<std::array<int, 2>>{{{1, 2}}, {{8, 3}}})
+        {
+          elements.clear();
+          nodes.clear();
+          gmsh_checked(file, "reading the elements", [&, type = type] {
+            gmsh::model::mesh::getElementsByType(type, elements, nodes);
+          });
+          for (std::size_t e = 0; e + stride <= nodes.size(); e += stride)
+            {
+              const auto a = index.find(nodes[e]), b = index.find(nodes[e + 1]);
+              AssertThrow(a != index.end() && b != index.end(),
+                          ExcMessage("tool profile file '" + file +
+                                     "': a line refers to a missing node"));
+              p.segments.push_back({{a->second, b->second}});
+            }
+        }
+      AssertThrow(!p.segments.empty(),
+                  ExcMessage("tool profile file '" + file +
+                             "': no lines in it (the axisymmetric model "
+                             "takes the tool's r-z profile as lines)"));
+      return p;
     }
   } // namespace tools
 } // namespace formsolve

@@ -1,8 +1,10 @@
 #include <formsolve/model/dimensions.h>
 #include <formsolve/tools/mesh_tool.h>
+#include <formsolve/tools/polyline_tool.h>
 #include <formsolve/tools/profile_tool.h>
 #include <formsolve/tools/tool_set.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace formsolve
@@ -87,6 +89,45 @@ namespace formsolve
           }
         return nullptr;
       }
+
+      /// A Shape = mesh tool of the axisymmetric model: its r-z profile,
+      /// read, moved by Mesh offset's z and Gap, and oriented. Errors name
+      /// the entry.
+      std::unique_ptr<PolylineTool>
+      polyline_tool(const parameters::Tool   &t,
+                    const int                 side,
+                    const double              thickness,
+                    const Tensor<1, 2>       &v,
+                    std::vector<std::string> &notes)
+      {
+        const std::string entry = "Tools/" + t.name + "/Mesh file: ";
+        try
+          {
+            auto lines = read_profile(t.mesh_file, t.facet_size);
+            for (auto &x : lines.points)
+              x[1] += t.mesh_offset[2] + side * t.gap;
+            auto tool = std::make_unique<PolylineTool>(t.name,
+                                                       lines,
+                                                       t.mesh_file,
+                                                       t.feature_angle,
+                                                       20 * thickness,
+                                                       0.5 * thickness,
+                                                       v);
+            if (!tool->orientation_note().empty())
+              notes.push_back("Tools/" + t.name + ": " +
+                              tool->orientation_note());
+            return tool;
+          }
+        catch (const ExceptionBase &e)
+          {
+            std::ostringstream what;
+            e.print_info(what);
+            std::string text = what.str();
+            text.erase(0, text.find_first_not_of(" \n"));
+            AssertThrow(false, ExcMessage(entry + text));
+          }
+        return nullptr;
+      }
     } // namespace
 
     template <int dim>
@@ -96,69 +137,131 @@ namespace formsolve
         : stroke(p.punch_stroke)
         , speed(p.punch_speed)
     {
-      auto add = [&](const parameters::Tool &t,
-                     const std::string      &key,
-                     const int               sa,
-                     const int               sb,
-                     const double            z,
-                     const Tensor<1, dim>   &v) {
-        if (!t.enabled)
-          return;
-        if (t.shape == ToolShape::mesh)
-          {
-            if constexpr (dim == 3)
-              tools.push_back(
-                mesh_tool(t, sb, thickness, v, orientation_notes));
-            else
-              AssertThrow(false,
-                          ExcMessage("Tools/" + t.name +
-                                     "/Shape: mesh needs a 3-D model"));
-          }
-        else
-          tools.push_back(
-            std::make_unique<ProfileTool<dim>>(t.name,
-                                               planform_of<dim>(t),
-                                               sa,
-                                               sb,
-                                               z,
-                                               t.profile_radius,
-                                               v));
-        friction.push_back(t.friction_coefficient);
-        penalty.push_back(t.penalty_factor > 0 ? t.penalty_factor
-                                               : c.penalty_factor);
-        allowed.push_back(t.allowed_penetration > 0 ? t.allowed_penetration
-                                                    : c.allowed_penetration);
-        keys.push_back(key);
-      };
+      using parameters::ToolMotion;
       Tensor<1, dim> down;
-      down[dim - 1] = -p.punch_speed;
+      down[dim - 1] = -1;
       // The punch comes first: punch_index() relies on it.
-      add(p.punch, "punch", -1, +1, thickness + p.punch.gap, down);
+      add(p.punch,
+          -1,
+          +1,
+          {ToolMotion::prescribed, down, p.punch_speed, 0, 0},
+          0,
+          c,
+          thickness);
       if (p.die.enabled)
         die = tools.size();
-      add(p.die, "die", +1, -1, -p.die.gap, Tensor<1, dim>());
+      add(p.die, +1, -1, {ToolMotion::fixed, down, 0, 0, 0}, 0, c, thickness);
       if (p.blank_holder.enabled)
         holder = tools.size();
+      const bool held = p.holder_control == parameters::HolderControl::force;
       add(p.blank_holder,
-          "blank_holder",
           +1,
           +1,
-          thickness + p.blank_holder.gap,
-          Tensor<1, dim>());
+          {held ? ToolMotion::force : ToolMotion::fixed,
+           down,
+           0,
+           0,
+           p.holder_force},
+          0,
+          c,
+          thickness);
+      additional = tools.size();
+      for (const auto &t : p.additional)
+        {
+          Motion<dim> m{t.motion, {}, t.speed, t.stroke, t.force};
+          // An axisymmetric model's z is its second coordinate.
+          for (unsigned int d = 0; d < dim; ++d)
+            m.direction[d] = t.direction[d + 3 - dim];
+          if (m.direction.norm() > 0)
+            m.direction /= m.direction.norm();
+          add(t,
+              t.solid_inside ? -1 : +1,
+              t.above ? +1 : -1,
+              m,
+              t.refinement_level,
+              c,
+              thickness);
+        }
     }
 
     template <int dim>
-    void ToolSet<dim>::set_axial_velocity(const unsigned int i, const double w)
+    void ToolSet<dim>::add(const parameters::Tool    &t,
+                           const int                  sa,
+                           const int                  sb,
+                           const Motion<dim>         &m,
+                           const unsigned int         level,
+                           const parameters::Contact &c,
+                           const double               thickness)
     {
-      Tensor<1, dim> v;
-      v[dim - 1] = w;
-      tools[i]->set_velocity(v);
+      if (!t.enabled)
+        return;
+      // A prescribed tool starts moving; the others stand until their force
+      // equation moves them.
+      const Tensor<1, dim> v = m.kind == parameters::ToolMotion::prescribed
+                                 ? m.speed * m.direction
+                                 : Tensor<1, dim>();
+      if (t.shape == ToolShape::mesh)
+        {
+          if constexpr (dim == 3)
+            tools.push_back(mesh_tool(t, sb, thickness, v, orientation_notes));
+          else
+            tools.push_back(
+              polyline_tool(t, sb, thickness, v, orientation_notes));
+        }
+      else
+        tools.push_back(std::make_unique<ProfileTool<dim>>(t.name,
+                                                           planform_of<dim>(t),
+                                                           sa,
+                                                           sb,
+                                                           sb > 0
+                                                             ? thickness + t.gap
+                                                             : -t.gap,
+                                                           t.profile_radius,
+                                                           v));
+      friction.push_back(t.friction_coefficient);
+      penalty.push_back(t.penalty_factor > 0 ? t.penalty_factor
+                                             : c.penalty_factor);
+      allowed.push_back(t.allowed_penetration > 0 ? t.allowed_penetration
+                                                  : c.allowed_penetration);
+      keys.push_back(parameters::tool_key(t.name));
+      motions.push_back(m);
+      levels.push_back(level);
     }
 
     template <int dim>
-    double ToolSet<dim>::axial_velocity(const unsigned int i) const
+    std::vector<unsigned int> ToolSet<dim>::force_controlled() const
     {
-      return tools[i]->velocity()[dim - 1];
+      std::vector<unsigned int> held;
+      for (unsigned int i = 0; i < tools.size(); ++i)
+        if (motions[i].kind == parameters::ToolMotion::force)
+          held.push_back(i);
+      return held;
+    }
+
+    template <int dim>
+    void ToolSet<dim>::set_speed_along(const unsigned int i, const double u)
+    {
+      tools[i]->set_velocity(u * motions[i].direction);
+    }
+
+    template <int dim>
+    double ToolSet<dim>::speed_along(const unsigned int i) const
+    {
+      return tools[i]->velocity() * motions[i].direction;
+    }
+
+    template <int dim>
+    void ToolSet<dim>::begin_step(const double dt)
+    {
+      for (unsigned int i = 0; i < tools.size(); ++i)
+        {
+          const auto &m = motions[i];
+          if (m.kind == parameters::ToolMotion::prescribed && m.stroke > 0)
+            set_speed_along(
+              i,
+              std::min(m.speed,
+                       std::max(0., m.stroke - tools[i]->travel()) / dt));
+        }
     }
 
     template <int dim>

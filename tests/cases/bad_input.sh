@@ -149,8 +149,16 @@ expect_die mesh_open_no_side "the sheet sees nothing" "$work/wall.stl"
 expect mesh_into_blank "Tools/Punch: the blank starts inside this tool" "$base3d" \
   --set "Tools/Punch/Shape=mesh" --set "Tools/Punch/Mesh file=$work/tools/punch.stl" \
   --set "Tools/Punch/Mesh offset=0, 0, -0.3"
-expect mesh_axisymmetric "must be round or flat for Geometry/Model = axisymmetric" "$cases/cup-axisymmetric.prm" \
-  --set "Tools/Die/Shape=mesh" --set "Tools/Die/Mesh file=$work/tools/die.stl"
+# The axisymmetric model takes profiles: a surface file, a 3-D curve, an
+# open profile of which the sheet sees nothing, each named.
+expect mesh_axisymmetric "Tools/Die/Mesh file: tool profile file '$work/tools/die.stl': unknown kind" \
+  "$cases/cup-axisymmetric.prm" --set "Tools/Die/Shape=mesh" --set "Tools/Die/Mesh file=$work/tools/die.stl"
+printf 'Point(1) = {20, 1, 0};\nPoint(2) = {60, 0, 3};\nLine(1) = {1, 2};\n' > "$work/skew.geo"
+expect profile_not_planar "Tools/Die/Mesh file: tool profile file '$work/skew.geo': the profile must lie" \
+  "$cases/cup-axisymmetric.prm" --set "Tools/Die/Shape=mesh" --set "Tools/Die/Mesh file=$work/skew.geo"
+printf '21.25, -1\n21.25, -45\n' > "$work/wall.csv"
+expect profile_no_side "Tools/Die/Mesh file: $work/wall.csv: an open profile of which the sheet sees nothing" \
+  "$cases/cup-axisymmetric.prm" --set "Tools/Die/Shape=mesh" --set "Tools/Die/Mesh file=$work/wall.csv"
 # A die whose normals all point inwards is turned, and the log says so.
 awk '$1 == "outer" { n = 0; print; next } $1 == "vertex" { v[n++] = $0; if (n == 3) { print v[0]; print v[2]; print v[1] } next } { print }' \
   "$work/tools/die.stl" > "$work/inside-out.stl"
@@ -161,6 +169,24 @@ if "$exe" "$base3d" --validate --set "Tools/Die/Shape=mesh" \
 else
   echo "FAIL mesh_inside_out:"; cat "$work/inside-out.out"; fail=1
 fi
+# Additional tools: a subsection of a tool not listed, a name taken twice or
+# by a standard tool, a direction the model cannot follow, no set force.
+counter="$cases/cup-counter-punch-force.prm"
+expect tool_not_listed "must be named in Tools/Additional tools" "$counter" \
+  --set "Tools/Additional tools="
+expect tool_named_twice "Tools/Additional tools: \`counter_punch\` is named twice" "$counter" \
+  --set "Tools/Additional tools=Counter punch, counter_punch"
+expect tool_named_die "Tools/Additional tools: \`die\` cannot name an additional tool" "$counter" \
+  --set "Tools/Additional tools=Counter punch, die"
+expect tool_direction_axisymmetric "Tools/Counter punch/Direction: must lie along z" "$counter" \
+  --set "Tools/Counter punch/Direction=1, 0, 1"
+expect tool_direction_zero "Tools/Counter punch/Direction: must not be zero" "$counter" \
+  --set "Tools/Counter punch/Direction=0, 0, 0"
+expect tool_no_force "Tools/Counter punch/Force: must be positive" "$counter" \
+  --set "Tools/Counter punch/Force=0"
+expect tool_direction_symmetry "Tools/Pad/Direction: must lie in the model's symmetry planes" "$base3d" \
+  --set "Tools/Additional tools=Pad" --set "Tools/Pad/Motion=prescribed" \
+  --set "Tools/Pad/Direction=1, 0, -1"
 # Checkpoint and restart.
 expect resume_other_case "written by another case" "$base" --resume
 expect resume_no_checkpoint "no complete checkpoint" "$base" --resume \

@@ -2,7 +2,8 @@
 # check_meshed_case.sh FORMSOLVE TOOLS_DIR OUTDIR PYTHON PRM TOOLSET SIZES
 #   COMPARE [ARGS...]: the case PRM (in tests/cases or a path; 2 ranks) with
 # its analytic tools and with meshed copies (meshes/tools/make-tools.sh
-# TOOLSET) at each facet size of SIZES ("2 1 0.5"); ARGS are further --set
+# TOOLSET; STL, or .msh profiles for cup-profile) at each facet size of
+# SIZES ("2 1 0.5"); ARGS are further --set
 # options for every run. COMPARE (a .py beside this script) then compares
 # OUTDIR/analytic with OUTDIR/meshed-<size>.
 set -euo pipefail
@@ -21,12 +22,14 @@ run() { # name settings...
   grep -E '^done' "$out/$name.log"
 }
 run analytic "$@"
+format=stl
+[[ $toolset == *-profile ]] && format=msh
 for size in $sizes; do
-  bash "$tools/make-tools.sh" "$toolset" "$size" "$out/tools-$size" stl > /dev/null
+  bash "$tools/make-tools.sh" "$toolset" "$size" "$out/tools-$size" $format > /dev/null
   settings=()
   for tool in Punch:punch Die:die "Blank holder:holder"; do
     settings+=(--set "Tools/${tool%%:*}/Shape=mesh"
-               --set "Tools/${tool%%:*}/Mesh file=$out/tools-$size/${tool##*:}.stl")
+               --set "Tools/${tool%%:*}/Mesh file=$out/tools-$size/${tool##*:}.$format")
   done
   run "meshed-$size" "${settings[@]}" "$@"
 done

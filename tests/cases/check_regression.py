@@ -50,6 +50,12 @@ got = list(results.read(out))
 failures = []
 if len(ref) != len(got):
     failures.append(f"{len(got)} steps, the reference has {len(ref)}")
+# The sheet's equilibrium residual along z is round-off and Newton's
+# tolerance, not a number to store; check_additional_tools.py bounds it.
+RESIDUALS = {"force_imbalance_z"}
+for row in got + ref:
+    for k in RESIDUALS:
+        row.pop(k, None)
 if ref and got and list(ref[0]) != list(got[0]):
     failures.append("the columns differ from the reference's")
 

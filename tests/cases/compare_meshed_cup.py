@@ -1,5 +1,6 @@
-"""The quarter cup drawn 5 mm with meshed copies of its analytic tools
-(check_meshed_case.sh): the punch force of the meshed tools at facets of 2, 1
+"""The cup drawn 5 mm (quarter, or axisymmetric with r-z profiles) with
+meshed copies of its analytic tools (check_meshed_case.sh): the punch force
+of the meshed tools at facets of 2, 1
 and 0.5 mm against the analytic tools' at every step from 2 mm of travel on
 (once the sheet wraps the nose): within 0.5 % at 0.5 mm, the deviation
 falling with the facet size, and the penetration within the allowed 1e-3 mm

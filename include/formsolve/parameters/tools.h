@@ -1,64 +1,21 @@
 // Subsection "Tools": punch, die and blank holder; the punch motion and the
-// blank-holder control.
+// blank-holder control; the tools of Additional tools.
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
+#include <formsolve/parameters/additional_tool.h>
+#include <formsolve/parameters/tool.h>
 
-#include <array>
 #include <string>
+#include <vector>
 
 namespace formsolve
 {
   namespace parameters
   {
-    using dealii::ParameterHandler;
-
-    enum class ToolShape
-    {
-      round,             // surface of revolution about the z axis
-      rounded_rectangle, // for square cups (3-D models only)
-      flat,              // an infinite plane
-      mesh               // a triangulated surface from a file (3-D models)
-    };
-
     enum class HolderControl
     {
       gap,  // held at its initial position
       force // moves so that its contact force equals Force
-    };
-
-    /// The entries every tool subsection (Punch, Die, Blank holder) has.
-    struct Tool
-    {
-      std::string name; // subsection name, also the history column prefix
-      bool        enabled              = true;
-      ToolShape   shape                = ToolShape::round;
-      double      diameter             = 40; // mm (round)
-      double      length               = 40; // mm (rounded rectangle, along x)
-      double      width                = 40; // mm (rounded rectangle, along y)
-      double      corner_radius        = 8;  // mm (rounded rectangle, in plane)
-      double      profile_radius       = 8;  // mm (fillet of the working edge)
-      double      gap                  = 0; // mm, initial distance to the sheet
-      double      friction_coefficient = 0.1;
-      double      penalty_factor       = 0; // N/mm^3; 0: Contact/Penalty factor
-      double      allowed_penetration  = 0; // mm; 0: Contact/Allowed penetr.
-      std::string mesh_file            = "";   // Shape = mesh: STL, .msh, CAD
-      std::array<double, 3> mesh_offset{};     // mm, added to the file's points
-      double                facet_size    = 1; // mm, CAD files meshed by gmsh
-      double                feature_angle = 30; // degrees, sharp edges
-
-      /// Round or rounded rectangle: a planform with an edge (an opening
-      /// for the die and holder), which the scene's rules can compare.
-      bool has_outline() const
-      {
-        return shape == ToolShape::round ||
-               shape == ToolShape::rounded_rectangle;
-      }
-
-      /// Declares the common entries inside the current subsection.
-      static void declare(ParameterHandler &prm, const Tool &defaults);
-      void        parse(ParameterHandler &prm);
-      void        validate() const;
     };
 
     struct Tools
@@ -72,7 +29,13 @@ namespace formsolve
       double        holder_force           = 2671;  // N, full part
       bool          holder_force_by_siebel = false; // Force = siebel
 
+      std::vector<AdditionalTool> additional;
+
       static void declare(ParameterHandler &prm);
+      /// The subsections Tools/<name> of the additional tools @p names
+      /// (read from the input by additional_tool_names()).
+      static void declare_additional(ParameterHandler               &prm,
+                                     const std::vector<std::string> &names);
       void        parse(ParameterHandler &prm);
       void        validate() const;
     };

@@ -34,17 +34,14 @@ namespace formsolve
       /// A Newton solve of a step begins.
       void begin_solve();
 
-      /// The pairs at the ghosted velocity @p v with the holder at axial
-      /// velocity @p w (used under force control), for a step of @p dt;
-      /// their status enters the contact state.
-      void search(const VectorType &v, const double w, const double dt);
+      /// The pairs at the ghosted velocity @p v with the tools at their
+      /// current velocities, for a step of @p dt; their status enters the
+      /// contact state.
+      void search(const VectorType &v, const double dt);
       /// The step's predictor @p v corrected where it would lift nodes in
       /// contact off their tools (Nonlinear solver/Predictor = keep
       /// contact); @p ghost: a ghosted vector to search with.
-      void predict(VectorType  &v,
-                   VectorType  &ghost,
-                   const double w,
-                   const double dt);
+      void predict(VectorType &v, VectorType &ghost, const double dt);
 
       /// Whether the factors are estimated from the body system (K_b, r_b)
       /// at every accepted iterate, rather than once per set of pairs.
@@ -88,7 +85,7 @@ namespace formsolve
       std::string info() const;
 
     private:
-      void find_pairs(const VectorType &v, const double w, const double dt);
+      void find_pairs(const VectorType &v, const double dt);
       /// The pairs each tool closed and opened since the last call (log).
       void count_changes();
 

@@ -1,9 +1,9 @@
 // The discrete problem of one step, as Newton sees it (a NonlinearProblem):
-// the sheet's body operator, the contact operator and, under force control,
-// the blank holder's force equation, which borders the system with the
-// holder's velocity as one more unknown. At every evaluation data flows one
+// the sheet's body operator, the contact operator and the force equations of
+// the tools under force control, which border the system with each such
+// tool's velocity as one more unknown. At every evaluation data flows one
 // way: contact search -> body residual (and tangent) -> penalty factors ->
-// contact terms -> holder equation; the linear solve takes the result.
+// contact terms -> force equations; the linear solve takes the result.
 #pragma once
 
 #include <deal.II/base/timer.h>
@@ -13,7 +13,7 @@
 #include <formsolve/solver/body_operator.h>
 #include <formsolve/solver/contact_operator.h>
 #include <formsolve/solver/factor_reuse.h>
-#include <formsolve/solver/holder_equation.h>
+#include <formsolve/solver/force_equations.h>
 #include <formsolve/solver/linear_solver.h>
 #include <formsolve/solver/nonlinear_problem.h>
 #include <formsolve/state/state.h>
@@ -41,14 +41,16 @@ namespace formsolve
       /// A step of @p dt begins (statistics of the step are reset).
       void begin_step(const double dt);
       /// A Newton solve of the step begins, from the state's velocity and
-      /// holder velocity: the state's velocity is the iterate.
+      /// force-controlled tools' velocities: the state's velocity is the
+      /// iterate.
       void begin_solve();
       /// The solve has converged: the strategy sees the body system of the
       /// converged iterate (contact::PenaltyStrategy::converged).
       void end_solve();
-      /// The step's predictor @p v (the previous step's velocity, holder at
-      /// its last velocity), corrected at the contact nodes by Nonlinear
-      /// solver/Predictor (contact::keep_contact). Call after begin_step().
+      /// The step's predictor @p v (the previous step's velocity, tools under
+      /// force control at their last velocities), corrected at the contact
+      /// nodes by Nonlinear solver/Predictor (contact::keep_contact). Call
+      /// after begin_step().
       void predict(VectorType &v);
 
       /// Factors of the pairs of the last assembly (one per pair).
@@ -56,8 +58,12 @@ namespace formsolve
       {
         return contact.factors();
       }
-      /// The holder's axial velocity of the accepted iterate (mm/s).
-      double       holder_velocity() const { return holder.velocity(); }
+      /// Velocity of force control j along its direction at the accepted
+      /// iterate (mm/s).
+      double control_velocity(const unsigned int j) const
+      {
+        return forces.velocity(j);
+      }
       unsigned int max_linear_iterations() const { return step_max_linear; }
       double       condition_estimate() const { return step_condition; }
       /// Matrix assemblies since the start (line-search trials assemble the
@@ -103,14 +109,14 @@ namespace formsolve
       };
 
       /// Contact search, body residual (and tangent), factors, contact terms
-      /// and holder equation at @p v; returns |r|.
+      /// and force equations at @p v; returns |r|.
       double assemble(const VectorType   &v,
                       const Linearisation kind,
                       const bool          with_tangent);
       /// The tangent of the last point, if it was left for later.
       void complete_tangent();
       /// The contact terms with the current factors (stiffness into the
-      /// matrix with @p with_tangent), and the holder's equation.
+      /// matrix with @p with_tangent), and the force equations.
       void add_contact_terms(const bool with_tangent);
       /// The contact stiffness taken out of the matrix: the body tangent K_b
       /// an adaptive estimate reads.
@@ -118,18 +124,20 @@ namespace formsolve
       /// At an accepted iterate: new adaptive factors from its body system;
       /// -1 if nothing changed, else the new |r|.
       double update_penalty();
-      /// K dv = -r with the tangent of the iterate (bordered by the holder's
-      /// equation under force control).
+      /// K dv = -r with the tangent of the iterate (bordered by the force
+      /// equations).
       unsigned int solve_direction(VectorType &dv);
       double       directional_derivative(const VectorType &dv) const;
       Evaluation   norms(const double r) const;
-      /// The holder's last correction relative to its velocity (-).
+      /// The largest last correction of a force-controlled tool relative to
+      /// its velocity (-).
       double extra_correction() const;
       bool   newton(const Linearisation kind) const
       {
         return kind != Linearisation::secant;
       }
-      bool holder_controlled() const { return state.holder.force_control; }
+      /// A tool is under force control in this step.
+      bool controlled() const { return forces.any_active(); }
       /// Whether the iterate is still the step's predictor (no estimate at
       /// a Newton iterate yet).
       bool predictor() const { return penalty_updates == 0; }
@@ -139,7 +147,7 @@ namespace formsolve
       dealii::TimerOutput   &timer;
       BodyOperator<dim>      body;
       ContactOperator<dim>   contact;
-      HolderEquation<dim>    holder;
+      ForceEquations<dim>    forces;
 
       MatrixType matrix;
       /// The residual of the last point and its body part r_b (no contact),

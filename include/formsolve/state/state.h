@@ -1,6 +1,6 @@
 // What a step changes, in one object: mesh, DoFs, velocity, displacement,
 // quadrature history, tool positions, contact nodes and contact state, the
-// blank-holder control and the time. Refinement transfers it as one; step
+// tools' force control and the time. Refinement transfers it as one; step
 // control saves and restores the part a failed step may have touched.
 #pragma once
 
@@ -30,14 +30,20 @@ namespace formsolve
   {
     using VectorType = dealii::TrilinosWrappers::MPI::Vector;
 
-    /// The blank holder's control: force control until the blank has left
-    /// it.
+    /// A tool under force control (tools::ToolSet::force_controlled()):
+    /// its velocity along its direction is one more unknown of each step.
+    struct ForceControl
+    {
+      unsigned int tool     = 0;
+      double       target   = 0;    // set force on the modelled part (N)
+      double       velocity = 0;    // along the direction, last step (mm/s)
+      bool         active   = true; // false once the holder is released
+    };
+
+    /// The blank holder lets go of the blank when its flange has left it.
     struct HolderState
     {
-      bool   force_control  = false; // Control = force and not released
       bool   released       = false;
-      double velocity       = 0;  // axial velocity of the last step (mm/s)
-      double target         = 0;  // set force on the modelled part (N)
       double release_travel = -1; // punch travel at release (mm)
     };
 
@@ -46,7 +52,7 @@ namespace formsolve
     {
       VectorType            velocity;
       contact::ContactState contact_state;
-      double                holder_velocity;
+      std::vector<double>   control_velocities;
     };
 
     template <int dim>
@@ -95,6 +101,12 @@ namespace formsolve
       /// nodes whose surface faces it (those that can carry its load), all
       /// ranks.
       double min_distance(const unsigned int t) const;
+      /// The force control of tool @p t, or nullptr.
+      ForceControl       *force_control(const unsigned int t);
+      const ForceControl *force_control(const unsigned int t) const;
+      /// The velocities and the activity of the force controls.
+      std::vector<double> control_velocities() const;
+      std::vector<bool>   active_controls() const;
 
       const parameters::Run &prm;
       MPI_Comm               comm;
@@ -117,10 +129,11 @@ namespace formsolve
       VectorType          velocity_ghost, displacement_ghost; // ghosted
       HistoryStorage<dim> history;
 
-      tools::ToolSet<dim>      tools;
-      contact::ContactSet<dim> contact_set; // nodes; pairs of the last iterate
-      contact::ContactState    contact_state;
-      HolderState              holder;
+      tools::ToolSet<dim>       tools;
+      contact::ContactSet<dim>  contact_set; // nodes; pairs of the last iterate
+      contact::ContactState     contact_state;
+      std::vector<ForceControl> force_controls;
+      HolderState               holder;
 
       double       time = 0;
       unsigned int step = 0;

@@ -1,4 +1,8 @@
-// The tools of a run, built from the Tools subsection, and their motion.
+// The tools of a run, built from the Tools subsection, and their motion:
+// the punch and prescribed tools at a speed along a direction, the fixed
+// ones still, the force-controlled ones (the blank holder under Control =
+// force, additional tools with Motion = force) at the velocity their force
+// equation gives (solver/force_equations.h).
 #pragma once
 
 #include <formsolve/parameters/contact.h>
@@ -12,6 +16,19 @@ namespace formsolve
 {
   namespace tools
   {
+    /// How tool i moves.
+    template <int dim>
+    struct Motion
+    {
+      parameters::ToolMotion kind = parameters::ToolMotion::fixed;
+      /// Unit direction of the motion (prescribed) or of the force on the
+      /// sheet (force).
+      Tensor<1, dim> direction;
+      double         speed  = 0; // mm/s (prescribed)
+      double         stroke = 0; // mm; 0: no end (prescribed)
+      double         force  = 0; // N on the full part (force)
+    };
+
     template <int dim>
     class ToolSet
     {
@@ -39,18 +56,37 @@ namespace formsolve
       {
         return allowed[i];
       }
-      /// Column/field name of tool i: punch, die, blank_holder.
+      /// Column/field name of tool i: punch, die, blank_holder, or an
+      /// additional tool's name in lower case with '_' for spaces.
       const std::string &key(const unsigned int i) const { return keys[i]; }
       unsigned int       punch_index() const { return 0; }
       /// Index of the die / blank holder, or none.
       unsigned int die_index() const { return die; }
       unsigned int holder_index() const { return holder; }
+      /// Tools first_additional() .. size()-1 are Tools/Additional tools.
+      unsigned int first_additional() const { return additional; }
 
-      /// Velocity of tool @p i along z (mm/s), e.g. the blank holder under
-      /// force control.
-      void   set_axial_velocity(const unsigned int i, const double w);
-      double axial_velocity(const unsigned int i) const;
+      const Motion<dim> &motion(const unsigned int i) const
+      {
+        return motions[i];
+      }
+      /// The tools under force control, in tool order.
+      std::vector<unsigned int> force_controlled() const;
+      /// Extra refinement levels near tool i's radii set by its own entry
+      /// (additional tools; 0 for punch, die and holder).
+      unsigned int refinement_level(const unsigned int i) const
+      {
+        return levels[i];
+      }
 
+      /// Velocity of tool @p i along its Motion direction (mm/s), a tool
+      /// under force control.
+      void   set_speed_along(const unsigned int i, const double u);
+      double speed_along(const unsigned int i) const;
+
+      /// A step of @p dt begins: a prescribed tool with a Stroke moves so
+      /// that it lands on it exactly and then stands.
+      void begin_step(const double dt);
       void advance(const double dt);
       /// What reading the tools' files changed (orientation), to be said.
       const std::vector<std::string> &notes() const
@@ -67,11 +103,23 @@ namespace formsolve
       double punch_speed() const { return speed; }
 
     private:
+      /// Tool @p t if enabled: its solid on side @p sa of its outline
+      /// (-1 inside), on side @p sb of the sheet (+1 above).
+      void add(const parameters::Tool    &t,
+               const int                  sa,
+               const int                  sb,
+               const Motion<dim>         &m,
+               const unsigned int         level,
+               const parameters::Contact &c,
+               const double               thickness);
+
       std::vector<std::unique_ptr<RigidTool<dim>>> tools;
       std::vector<double>                          friction, penalty, allowed;
       std::vector<std::string>                     keys, orientation_notes;
+      std::vector<Motion<dim>>                     motions;
+      std::vector<unsigned int>                    levels;
       double                                       stroke, speed;
-      unsigned int                                 die = none, holder = none;
+      unsigned int die = none, holder = none, additional = 0;
     };
   } // namespace tools
 } // namespace formsolve

@@ -1,0 +1,157 @@
+#include <deal.II/base/utilities.h>
+
+#include <formsolve/parameters/additional_tool.h>
+#include <formsolve/parameters/choice.h>
+#include <formsolve/parameters/require.h>
+
+#include <cmath>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    using namespace dealii::Patterns;
+
+    namespace
+    {
+      const Choice<ToolMotion> motion_names{{"fixed", ToolMotion::fixed},
+                                            {"prescribed",
+                                             ToolMotion::prescribed},
+                                            {"force", ToolMotion::force}};
+    } // namespace
+
+    void AdditionalTool::declare(ParameterHandler &prm, const std::string &n)
+    {
+      prm.enter_subsection(n);
+      AdditionalTool d;
+      d.shape = ToolShape::flat;
+      Tool::declare(prm, d);
+      prm.declare_entry("Side",
+                        "above",
+                        Selection("above|below"),
+                        "The side of the sheet the tool works on: above "
+                        "(its face at z = thickness + Gap) or below (at z = "
+                        "-Gap).");
+      prm.declare_entry(
+        "Solid",
+        "inside",
+        Selection("inside|outside"),
+        "Round and rounded rectangle: the tool's solid lies inside its "
+        "outline (a punch, a pad) or outside it (a ring around an opening, "
+        "as the die and the blank holder); the Profile radius rounds the "
+        "outline's edge.");
+      prm.declare_entry(
+        "Motion",
+        "fixed",
+        Selection(motion_names.pattern()),
+        "fixed: the tool stays where it starts. prescribed: it moves at "
+        "Speed along Direction, for the whole run or until it has "
+        "travelled Stroke. force: it moves along Direction so that the "
+        "force it exerts on the sheet along Direction equals Force in every "
+        "step (solved with the velocities, as the blank holder's).");
+      prm.declare_entry("Direction",
+                        "0, 0, -1",
+                        List(Double(), 3, 3, ","),
+                        "x, y, z of the direction of motion (prescribed) or "
+                        "of the force on the sheet (force); made unit "
+                        "length. An axisymmetric model takes only z; a "
+                        "symmetry plane, no component normal to it.");
+      prm.declare_entry("Speed",
+                        str(d.speed),
+                        Double(0),
+                        "Motion = prescribed: speed along Direction (mm/s).");
+      prm.declare_entry("Stroke",
+                        str(d.stroke),
+                        Double(0),
+                        "Motion = prescribed: the tool stops after this "
+                        "travel (mm), landing on it exactly; 0: it moves "
+                        "for the whole run.");
+      prm.declare_entry("Force",
+                        str(d.force),
+                        Double(0),
+                        "Motion = force: the force the tool exerts on the "
+                        "sheet along Direction (N, > 0), for the full part "
+                        "(the model's share is taken by the symmetry "
+                        "factor).");
+      prm.declare_entry("Refinement level",
+                        "0",
+                        Integer(0, 10),
+                        "Extra refinement levels of the sheet near the "
+                        "tool's radii, as Mesh refinement/Punch level for "
+                        "the punch (0: none).");
+      prm.leave_subsection();
+    }
+
+    void AdditionalTool::parse(ParameterHandler &prm)
+    {
+      Tool::parse(prm);
+      above        = prm.get("Side") == "above";
+      solid_inside = prm.get("Solid") == "inside";
+      motion       = motion_names.parse(prm.get("Motion"));
+      const auto d =
+        dealii::Utilities::split_string_list(prm.get("Direction"));
+      for (unsigned int c = 0; c < 3; ++c)
+        direction[c] = dealii::Utilities::string_to_double(d[c]);
+      speed            = prm.get_double("Speed");
+      stroke           = prm.get_double("Stroke");
+      force            = prm.get_double("Force");
+      refinement_level = prm.get_integer("Refinement level");
+    }
+
+    void AdditionalTool::validate(const bool axisymmetric,
+                                  const bool symmetric_x,
+                                  const bool symmetric_y) const
+    {
+      if (!enabled)
+        return;
+      Tool::validate();
+      const std::string e = "Tools/" + name + "/";
+      if (motion == ToolMotion::fixed)
+        return;
+      const double length = std::sqrt(direction[0] * direction[0] +
+                                      direction[1] * direction[1] +
+                                      direction[2] * direction[2]);
+      require(std::isfinite(length) && length > 0,
+              e + "Direction",
+              "must not be zero");
+      require(!axisymmetric || (direction[0] == 0 && direction[1] == 0),
+              e + "Direction",
+              "must lie along z for Geometry/Model = axisymmetric");
+      require((!symmetric_x || direction[0] == 0) &&
+                (!symmetric_y || direction[1] == 0),
+              e + "Direction",
+              "must lie in the model's symmetry planes (no x component "
+              "with a plane x = 0, no y component with y = 0)");
+      if (motion == ToolMotion::prescribed)
+        require_positive(speed, e + "Speed", "mm/s");
+      else
+        require_positive(force, e + "Force", "N");
+    }
+
+    std::vector<std::string> additional_tool_names(
+      const std::string                                       &text,
+      const std::vector<std::pair<std::string, std::string>> &overrides)
+    {
+      ParameterHandler prm;
+      prm.enter_subsection("Tools");
+      prm.declare_entry("Additional tools", "", Anything());
+      prm.leave_subsection();
+      try
+        {
+          prm.parse_input_from_string(text, "", /*skip_undefined=*/true);
+        }
+      catch (const dealii::ExceptionBase &)
+        {
+          return {};
+        }
+      std::string list;
+      prm.enter_subsection("Tools");
+      list = prm.get("Additional tools");
+      prm.leave_subsection();
+      for (const auto &[path, value] : overrides)
+        if (path == "Tools/Additional tools")
+          list = value;
+      return dealii::Utilities::split_string_list(list);
+    }
+  } // namespace parameters
+} // namespace formsolve

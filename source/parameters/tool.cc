@@ -1,0 +1,192 @@
+#include <deal.II/base/utilities.h>
+
+#include <formsolve/parameters/choice.h>
+#include <formsolve/parameters/require.h>
+#include <formsolve/parameters/tool.h>
+
+#include <cctype>
+#include <cmath>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    using namespace dealii::Patterns;
+
+    namespace
+    {
+      const Choice<ToolShape> shape_names{{"round", ToolShape::round},
+                                          {"rounded rectangle",
+                                           ToolShape::rounded_rectangle},
+                                          {"flat", ToolShape::flat},
+                                          {"mesh", ToolShape::mesh}};
+    } // namespace
+
+    std::string tool_key(const std::string &name)
+    {
+      std::string key = name;
+      for (auto &ch : key)
+        ch = ch == ' ' ? '_' : std::tolower(static_cast<unsigned char>(ch));
+      return key;
+    }
+
+    void Tool::declare(ParameterHandler &prm, const Tool &d)
+    {
+      prm.declare_entry("Enabled",
+                        d.enabled ? "true" : "false",
+                        Bool(),
+                        "Whether this tool takes part.");
+      prm.declare_entry(
+        "Shape",
+        shape_names.name(d.shape),
+        Selection(shape_names.pattern()),
+        "round: surface of revolution about the z axis (in the axisymmetric "
+        "model its r-z profile); rounded rectangle: for square cups (3-D "
+        "models); flat: an infinite plane; mesh: the triangulated surface "
+        "of 'Mesh file' (3-D models) or its r-z profile (axisymmetric "
+        "model), moved by 'Mesh offset' and by 'Gap' away from the sheet.");
+      prm.declare_entry(
+        "Diameter",
+        str(d.diameter),
+        Double(0),
+        "Round tools: punch diameter, die opening diameter, or blank "
+        "holder inner diameter (mm).");
+      prm.declare_entry("Length",
+                        str(d.length),
+                        Double(0),
+                        "Rounded rectangle: full size along x (mm).");
+      prm.declare_entry("Width",
+                        str(d.width),
+                        Double(0),
+                        "Rounded rectangle: full size along y (mm).");
+      prm.declare_entry(
+        "Corner radius",
+        str(d.corner_radius),
+        Double(0),
+        "Rounded rectangle: in-plane corner radius (mm); at least the "
+        "profile radius for a punch.");
+      prm.declare_entry("Profile radius",
+                        str(d.profile_radius),
+                        Double(0),
+                        "Radius of the rounded working edge (punch nose, die "
+                        "entry) (mm).");
+      prm.declare_entry(
+        "Gap",
+        str(d.gap),
+        Double(),
+        "Initial distance between the tool face and the sheet surface "
+        "it acts on (mm). The die is below the sheet (z <= 0), punch "
+        "and blank holder above (z >= thickness).");
+      prm.declare_entry("Friction coefficient",
+                        str(d.friction_coefficient),
+                        Double(0, 1.5),
+                        "Coulomb friction coefficient mu (-); above 0.5 "
+                        "(more than dry sheet forming shows) a warning.");
+      prm.declare_entry(
+        "Penalty factor",
+        str(d.penalty_factor),
+        Double(0),
+        "Fixed contact penalty for this tool (N/mm^3, contact pressure "
+        "per mm of penetration); 0 takes Contact/Penalty factor.");
+      prm.declare_entry(
+        "Allowed penetration",
+        str(d.allowed_penetration),
+        Double(0),
+        "Adaptive penalty: allowed penetration delta into this tool (mm); "
+        "0 takes Contact/Allowed penetration.");
+      prm.declare_entry(
+        "Mesh file",
+        d.mesh_file,
+        Anything(),
+        "Shape = mesh: the tool's surface in mm, relative to the working "
+        "directory: STL (ASCII or binary) or a gmsh mesh (.msh, its "
+        "triangles), or geometry gmsh meshes at 'Facet size' (.geo, STEP "
+        ".step/.stp, IGES .iges/.igs, .brep). A closed surface is the "
+        "tool's solid; an open one is its working face, its side the one "
+        "the blank lies on. Normals are made to agree, each change said "
+        "in the log. The axisymmetric model takes the tool's r-z profile: a "
+        "CSV of r, z points (.csv, in order along the profile) or gmsh lines "
+        "(.msh, or a .geo meshed at 'Facet size') drawn in the x-z plane or "
+        "in the x-y plane (y as z); a closed profile is the section of the "
+        "solid, an open one its working face.");
+      prm.declare_entry("Mesh offset",
+                        "0, 0, 0",
+                        List(Double(), 3, 3, ","),
+                        "Shape = mesh: translation x, y, z added to the "
+                        "file's coordinates (mm).");
+      prm.declare_entry("Facet size",
+                        str(d.facet_size),
+                        Double(0),
+                        "Shape = mesh from .geo, STEP, IGES or BREP: the "
+                        "largest triangle (or profile segment) edge gmsh "
+                        "makes (mm).");
+      prm.declare_entry(
+        "Feature angle",
+        str(d.feature_angle),
+        Double(0, 180),
+        "Shape = mesh: neighbouring triangles (profile segments) whose "
+        "normals differ by more than this (degrees) meet at a sharp edge; "
+        "elsewhere the surface "
+        "is smoothed (normals interpolated from the vertices, doc/theory.md "
+        "eq. 7b).");
+    }
+
+    void Tool::parse(ParameterHandler &prm)
+    {
+      enabled              = prm.get_bool("Enabled");
+      shape                = shape_names.parse(prm.get("Shape"));
+      diameter             = prm.get_double("Diameter");
+      length               = prm.get_double("Length");
+      width                = prm.get_double("Width");
+      corner_radius        = prm.get_double("Corner radius");
+      profile_radius       = prm.get_double("Profile radius");
+      gap                  = prm.get_double("Gap");
+      friction_coefficient = prm.get_double("Friction coefficient");
+      penalty_factor       = prm.get_double("Penalty factor");
+      allowed_penetration  = prm.get_double("Allowed penetration");
+      mesh_file            = prm.get("Mesh file");
+      const auto offset =
+        dealii::Utilities::split_string_list(prm.get("Mesh offset"));
+      for (unsigned int c = 0; c < 3; ++c)
+        mesh_offset[c] = dealii::Utilities::string_to_double(offset[c]);
+      facet_size    = prm.get_double("Facet size");
+      feature_angle = prm.get_double("Feature angle");
+    }
+
+    void Tool::validate() const
+    {
+      if (!enabled)
+        return;
+      const std::string e = "Tools/" + name + "/";
+      require(std::isfinite(gap), e + "Gap", "must be a finite number (mm)");
+      if (shape == ToolShape::round && name == "Punch")
+        {
+          require_positive(diameter, e + "Diameter", "mm");
+          require(profile_radius <= 0.5 * diameter,
+                  e + "Profile radius",
+                  "must not exceed half the Diameter");
+        }
+      if (shape == ToolShape::mesh)
+        {
+          require(!mesh_file.empty(),
+                  e + "Mesh file",
+                  "must name the tool's surface file when Shape = mesh");
+          require_positive(facet_size, e + "Facet size", "mm");
+        }
+      if (shape == ToolShape::rounded_rectangle)
+        {
+          require(length > 0 && width > 0,
+                  e + "Length",
+                  "Length and Width must be positive (mm)");
+          require(corner_radius <= 0.5 * std::min(length, width),
+                  e + "Corner radius",
+                  "must not exceed half of Length and Width");
+          if (name == "Punch")
+            require(corner_radius >= profile_radius,
+                    e + "Corner radius",
+                    "must be at least the Profile radius for a punch");
+        }
+    }
+
+  } // namespace parameters
+} // namespace formsolve
