@@ -88,8 +88,7 @@ namespace formsolve
       above        = prm.get("Side") == "above";
       solid_inside = prm.get("Solid") == "inside";
       motion       = motion_names.parse(prm.get("Motion"));
-      const auto d =
-        dealii::Utilities::split_string_list(prm.get("Direction"));
+      const auto d = dealii::Utilities::split_string_list(prm.get("Direction"));
       for (unsigned int c = 0; c < 3; ++c)
         direction[c] = dealii::Utilities::string_to_double(d[c]);
       speed            = prm.get_double("Speed");
@@ -108,9 +107,9 @@ namespace formsolve
       const std::string e = "Tools/" + name + "/";
       if (motion == ToolMotion::fixed)
         return;
-      const double length = std::sqrt(direction[0] * direction[0] +
-                                      direction[1] * direction[1] +
-                                      direction[2] * direction[2]);
+      const double length =
+        std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
+                  direction[2] * direction[2]);
       require(std::isfinite(length) && length > 0,
               e + "Direction",
               "must not be zero");
@@ -129,7 +128,7 @@ namespace formsolve
     }
 
     std::vector<std::string> additional_tool_names(
-      const std::string                                       &text,
+      const std::string                                      &text,
       const std::vector<std::pair<std::string, std::string>> &overrides)
     {
       ParameterHandler prm;

@@ -18,13 +18,12 @@ namespace formsolve
                           const Point<2> &c,
                           const Point<2> &d)
       {
-        const auto turn = [](const Point<2> &p,
-                             const Point<2> &q,
-                             const Point<2> &r) {
-          const double x = (q[0] - p[0]) * (r[1] - p[1]) -
-                           (q[1] - p[1]) * (r[0] - p[0]);
-          return (x > 0) - (x < 0);
-        };
+        const auto turn =
+          [](const Point<2> &p, const Point<2> &q, const Point<2> &r) {
+            const double x =
+              (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+            return (x > 0) - (x < 0);
+          };
         return turn(a, b, c) * turn(a, b, d) <= 0 &&
                turn(c, d, a) * turn(c, d, b) <= 0;
       }
@@ -60,7 +59,8 @@ namespace formsolve
       const unsigned int n = segments.size();
       normal.resize(n);
       for (unsigned int s = 0; s < n; ++s)
-        normal[s] = right_normal(points[segments[s][0]], points[segments[s][1]]);
+        normal[s] =
+          right_normal(points[segments[s][0]], points[segments[s][1]]);
       // The segments at each point (head to tail after orient()).
       std::vector<int> into(points.size(), -1), out_of(points.size(), -1);
       for (unsigned int s = 0; s < n; ++s)
@@ -75,15 +75,15 @@ namespace formsolve
       for (unsigned int s = 0; s < n; ++s)
         for (unsigned int e = 0; e < 2; ++e)
           {
-            const int other = e == 0 ? into[segments[s][0]] :
-                                       out_of[segments[s][1]];
+            const int other =
+              e == 0 ? into[segments[s][0]] : out_of[segments[s][1]];
             corner_normal[s][e] = end_normal[s][e] = normal[s];
             if (other < 0)
               continue;
             const Tensor<1, 2> mean = normal[s] + normal[other];
             end_normal[s][e]        = mean / mean.norm();
             const double c          = normal[s] * normal[other];
-            const double own = points[segments[s][0]].distance(
+            const double own        = points[segments[s][0]].distance(
                            points[segments[s][1]]),
                          next = points[segments[other][0]].distance(
                            points[segments[other][1]]);
@@ -91,9 +91,9 @@ namespace formsolve
             // an arc at its tangent point: its normal is the vertex's there
             // (as a flat fan's in 3-D), or the line would bulge.
             if (c >= cos_feature)
-              corner_normal[s][e] = own > 4 * next   ? normal[s] :
-                                    next > 4 * own   ? normal[other] :
-                                                       end_normal[s][e];
+              corner_normal[s][e] = own > 4 * next   ? normal[s]
+                                    : next > 4 * own ? normal[other]
+                                                     : end_normal[s][e];
             // Radius of the arc through the turn: length / angle.
             const double angle  = std::acos(std::min(1., c));
             const double length = 0.5 * (own + next);
@@ -123,12 +123,12 @@ namespace formsolve
         AssertThrow(at[v].size() <= 2,
                     ExcMessage(file + ": " + std::to_string(at[v].size()) +
                                " lines meet at the point r = " +
-                               std::to_string(points[v][0]) + ", z = " +
-                               std::to_string(points[v][1]) +
+                               std::to_string(points[v][0]) +
+                               ", z = " + std::to_string(points[v][1]) +
                                "; a profile is a chain of lines"));
       // Walk each chain from an end (open) or anywhere (closed), head to
       // tail.
-      std::vector<bool>                      used(segments.size(), false);
+      std::vector<bool>                        used(segments.size(), false);
       std::vector<std::array<unsigned int, 2>> ordered;
       std::vector<std::string>                 changes;
       for (const bool open : {true, false})
@@ -172,15 +172,16 @@ namespace formsolve
                 // its horizontal extent.
                 for (const auto &s : chain)
                   {
-                    const Point<2> m = 0.5 * (points[s[0]] + points[s[1]]);
-                    const Tensor<1, 2> n = right_normal(points[s[0]],
-                                                        points[s[1]]);
-                    const double       to_plane = sheet_z - m[1];
-                    const double length = points[s[0]].distance(points[s[1]]);
+                    const Point<2>     m = 0.5 * (points[s[0]] + points[s[1]]);
+                    const Tensor<1, 2> n =
+                      right_normal(points[s[0]], points[s[1]]);
+                    const double to_plane = sheet_z - m[1];
+                    const double length   = points[s[0]].distance(points[s[1]]);
                     if (std::abs(to_plane) < 1e-9 * length || n[1] == 0)
                       continue;
-                    const Point<2> a(m[0], m[1] + 1e-9 * length *
-                                                    (to_plane > 0 ? 1 : -1)),
+                    const Point<2> a(m[0],
+                                     m[1] +
+                                       1e-9 * length * (to_plane > 0 ? 1 : -1)),
                       b(m[0], sheet_z);
                     bool hidden = false;
                     for (const auto &o : segments)
@@ -211,16 +212,16 @@ namespace formsolve
               changes.push_back(
                 std::to_string(chain.size() - as_given) + " of " +
                 std::to_string(chain.size()) +
-                (open ? " lines of an open chain turned to face the sheet" :
-                        " lines of a closed chain turned to face outwards"));
+                (open ? " lines of an open chain turned to face the sheet"
+                      : " lines of a closed chain turned to face outwards"));
             ordered.insert(ordered.end(), chain.begin(), chain.end());
           }
       segments = ordered;
       if (!changes.empty())
         note = file + ": " + changes.front() +
-               (changes.size() > 1 ?
-                  " (and " + std::to_string(changes.size() - 1) + " more)" :
-                  "");
+               (changes.size() > 1
+                  ? " (and " + std::to_string(changes.size() - 1) + " more)"
+                  : "");
     }
 
     PolylineTool::Closest PolylineTool::closest(const Point<2> &p) const
@@ -231,9 +232,9 @@ namespace formsolve
         {
           const Point<2>    &a = points[segments[s][0]];
           const Tensor<1, 2> e = points[segments[s][1]] - a;
-          const double t = std::clamp(((p - a) * e) / (e * e), 0., 1.);
-          const Point<2> x = a + t * e;
-          const double   d = p.distance(x);
+          const double       t = std::clamp(((p - a) * e) / (e * e), 0., 1.);
+          const Point<2>     x = a + t * e;
+          const double       d = p.distance(x);
           if (d < best.distance)
             best = {s, t, x, d};
         }
@@ -243,9 +244,9 @@ namespace formsolve
     double PolylineTool::signed_distance(const Point<2> &p_now,
                                          Tensor<1, 2>   &n) const
     {
-      const Point<2> p = p_now - offset;
-      const Closest  c = closest(p);
-      const unsigned int s = c.segment;
+      const Point<2>     p   = p_now - offset;
+      const Closest      c   = closest(p);
+      const unsigned int s   = c.segment;
       constexpr double   tol = 1e-10;
       const int          end = c.t < tol ? 0 : c.t > 1 - tol ? 1 : -1;
       // At a sharp corner or an open end the segments are the surface: the
@@ -254,13 +255,13 @@ namespace formsolve
       if (end >= 0 && corner_normal[s][end] == normal[s])
         {
           const double sign = (p - c.point) * end_normal[s][end] < 0 ? -1 : 1;
-          n = c.distance > tol ? sign * (p - c.point) / c.distance :
-                                 end_normal[s][end];
+          n = c.distance > tol ? sign * (p - c.point) / c.distance
+                               : end_normal[s][end];
           return sign * c.distance;
         }
       // Phong's quadratic with shape factor 1/2 over the segment, as for
       // triangles (doc/theory.md eq. 7b).
-      const double w[2] = {1 - c.t, c.t};
+      const double w[2]   = {1 - c.t, c.t};
       Point<2>     lifted = c.point;
       n                   = 0;
       for (unsigned int k = 0; k < 2; ++k)
@@ -286,14 +287,14 @@ namespace formsolve
 
     double PolylineTool::distance_to_radius(const Point<2> &p) const
     {
-      double d = std::numeric_limits<double>::infinity();
+      double         d = std::numeric_limits<double>::infinity();
       const Point<2> q = p - offset;
       for (const unsigned int s : bends)
         {
           const Point<2>    &a = points[segments[s][0]];
           const Tensor<1, 2> e = points[segments[s][1]] - a;
-          const double t = std::clamp(((q - a) * e) / (e * e), 0., 1.);
-          d              = std::min(d, q.distance(a + t * e));
+          const double       t = std::clamp(((q - a) * e) / (e * e), 0., 1.);
+          d                    = std::min(d, q.distance(a + t * e));
         }
       return d;
     }

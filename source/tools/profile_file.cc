@@ -18,8 +18,9 @@ namespace formsolve
     {
       std::ifstream in(file);
       AssertThrow(in.good(),
-                  ExcMessage("tool profile file '" + file + "': no such file "
-                                                            "or not readable"));
+                  ExcMessage("tool profile file '" + file +
+                             "': no such file "
+                             "or not readable"));
       ProfileLines p;
       std::string  line;
       unsigned int number = 0;

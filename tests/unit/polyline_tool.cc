@@ -64,8 +64,8 @@ int main()
   double last = 0;
   for (const unsigned int n : {16u, 32u, 64u})
     {
-      const PolylineTool t("circle", circle(n, 4, true), "circle", 30, 0, 100,
-                           still);
+      const PolylineTool
+                   t("circle", circle(n, 4, true), "circle", 30, 0, 100, still);
       const double e = circle_error(t, 4, 0.1);
       // The segments' own error: the sagitta R (1 - cos(pi/n)).
       const double sagitta = 4 * (1 - std::cos(M_PI / n));
@@ -82,8 +82,8 @@ int main()
     }
   // A clockwise circle is turned to face outwards, and says so.
   {
-    const PolylineTool t("circle", circle(32, 4, false), "cw.csv", 30, 0, 100,
-                         still);
+    const PolylineTool
+                 t("circle", circle(32, 4, false), "cw.csv", 30, 0, 100, still);
     Tensor<1, 2> n;
     test::close("clockwise circle turned: inside negative",
                 t.signed_distance(Point<2>(30, 5), n),
@@ -121,8 +121,8 @@ int main()
   const ProfileTool<2> exact("die", opening, +1, -1, 0, 8, still);
   for (const std::string &file : {forward, backward})
     {
-      const PolylineTool t("die", read_profile(file, 1), file, 30, 15.6, 0.39,
-                           still);
+      const PolylineTool
+             t("die", read_profile(file, 1), file, 30, 15.6, 0.39, still);
       double worst = 0;
       for (const Point<2> &p : {Point<2>(40, 0.3),
                                 Point<2>(40, -0.2),
@@ -147,17 +147,26 @@ int main()
   // A sharp corner (the holder's edge): the sign right on both sides.
   write("holder.csv", "29.25, 10.78\n29.25, 0.78\n60, 0.78\n");
   {
-    const PolylineTool t("holder", read_profile("holder.csv", 1), "holder.csv",
-                         30, 15.6, 0.39, still);
-    Tensor<1, 2> n;
+    const PolylineTool t("holder",
+                         read_profile("holder.csv", 1),
+                         "holder.csv",
+                         30,
+                         15.6,
+                         0.39,
+                         still);
+    Tensor<1, 2>       n;
     test::close("beside the holder's edge, in the opening",
                 t.signed_distance(Point<2>(29, 0.7), n),
                 std::hypot(0.25, 0.08),
                 1e-12);
-    test::close("under the face", t.signed_distance(Point<2>(35, 0.5), n), 0.28,
+    test::close("under the face",
+                t.signed_distance(Point<2>(35, 0.5), n),
+                0.28,
                 1e-12);
-    test::close("inside the holder", t.signed_distance(Point<2>(35, 1), n),
-                -0.22, 1e-12);
+    test::close("inside the holder",
+                t.signed_distance(Point<2>(35, 1), n),
+                -0.22,
+                1e-12);
   }
   // gmsh: the same die drawn in the x-z plane and in the x-y plane.
   write("die-xz.geo",
@@ -172,9 +181,9 @@ int main()
         "Line(1) = {1, 2};\nCircle(2) = {2, 3, 4};\nLine(3) = {4, 5};\n");
   for (const std::string file : {"die-xz.geo", "die-xy.geo"})
     {
-      const PolylineTool t("die", read_profile(file, 0.5), file, 30, 15.6,
-                           0.39, still);
-      Tensor<1, 2> n, m;
+      const PolylineTool
+        t("die", read_profile(file, 0.5), file, 30, 15.6, 0.39, still);
+      Tensor<1, 2>   n, m;
       const Point<2> p(25, -2);
       test::close(file + ": on the radius as the analytic die",
                   t.signed_distance(p, n),
@@ -186,33 +195,51 @@ int main()
   write("words.csv", "1, 2\n3, x\n");
   write("tee.csv", "0, 0\n1, 0\n");
   write("wall.csv", "20, -5\n20, -45\n");
-  test::close("missing file", refused([] { read_profile("no.csv", 1); },
-                                      "no.csv"), 1, 0);
-  test::close("one point", refused([] { read_profile("one.csv", 1); },
-                                   "fewer than two points"), 1, 0);
-  test::close("not a number", refused([] { read_profile("words.csv", 1); },
-                                      "words.csv', line 2"), 1, 0);
-  test::close("unknown kind", refused([] { read_profile("die.stl", 1); },
-                                      "CSV of r, z points"), 1, 0);
+  test::close("missing file",
+              refused([] { read_profile("no.csv", 1); }, "no.csv"),
+              1,
+              0);
+  test::close("one point",
+              refused([] { read_profile("one.csv", 1); },
+                      "fewer than two points"),
+              1,
+              0);
+  test::close("not a number",
+              refused([] { read_profile("words.csv", 1); },
+                      "words.csv', line 2"),
+              1,
+              0);
+  test::close("unknown kind",
+              refused([] { read_profile("die.stl", 1); }, "CSV of r, z points"),
+              1,
+              0);
   test::close("a wall the sheet cannot see",
               refused(
                 [&] {
-                  PolylineTool("w", read_profile("wall.csv", 1), "wall.csv",
-                               30, 15.6, 0.39, still);
+                  PolylineTool("w",
+                               read_profile("wall.csv", 1),
+                               "wall.csv",
+                               30,
+                               15.6,
+                               0.39,
+                               still);
                 },
                 "sheet sees nothing"),
               1,
               0);
   {
     ProfileLines tee;
-    tee.points   = {Point<2>(0, 0), Point<2>(1, 0), Point<2>(2, 0),
+    tee.points   = {Point<2>(0, 0),
+                    Point<2>(1, 0),
+                    Point<2>(2, 0),
                     Point<2>(1, 1)};
     tee.segments = {{{0, 1}}, {{1, 2}}, {{1, 3}}};
-    test::close("three lines at a point",
-                refused([&] { PolylineTool("t", tee, "tee", 30, 1, -1, still); },
-                        "3 lines meet"),
-                1,
-                0);
+    test::close(
+      "three lines at a point",
+      refused([&] { PolylineTool("t", tee, "tee", 30, 1, -1, still); },
+              "3 lines meet"),
+      1,
+      0);
   }
   return test::result();
 }

@@ -23,13 +23,13 @@ namespace formsolve
 
     struct AdditionalTool : Tool
     {
-      bool                  above      = true; // Side: above or below
+      bool                  above        = true; // Side: above or below
       bool                  solid_inside = true; // Solid: inside or outside
-      ToolMotion            motion     = ToolMotion::fixed;
+      ToolMotion            motion       = ToolMotion::fixed;
       std::array<double, 3> direction{{0, 0, -1}}; // unit, x y z
-      double                speed            = 1; // mm/s (prescribed)
-      double                stroke           = 0; // mm; 0: the whole run
-      double                force            = 0; // N, full part (force)
+      double                speed            = 1;  // mm/s (prescribed)
+      double                stroke           = 0;  // mm; 0: the whole run
+      double                force            = 0;  // N, full part (force)
       unsigned int          refinement_level = 0;
 
       /// The entries of subsection Tools/<name>.
@@ -47,7 +47,7 @@ namespace formsolve
     /// the input is parsed; empty if the text does not parse (the real
     /// parse says why).
     std::vector<std::string> additional_tool_names(
-      const std::string                                       &text,
+      const std::string                                      &text,
       const std::vector<std::pair<std::string, std::string>> &overrides);
   } // namespace parameters
 } // namespace formsolve

@@ -34,12 +34,12 @@ namespace formsolve
       /// What orienting changed, to be said (empty: nothing).
       const std::string &orientation_note() const { return note; }
 
-      double signed_distance(const Point<2> &p,
-                             Tensor<1, 2>   &normal) const override;
-      double signed_distance_within(const Point<2> &p,
-                                    const double    reach,
-                                    Tensor<1, 2>   &normal) const override;
-      double distance_to_radius(const Point<2> &p) const override;
+      double       signed_distance(const Point<2> &p,
+                                   Tensor<1, 2>   &normal) const override;
+      double       signed_distance_within(const Point<2> &p,
+                                          const double    reach,
+                                          Tensor<1, 2>   &normal) const override;
+      double       distance_to_radius(const Point<2> &p) const override;
       Tensor<1, 2> velocity() const override { return tool_velocity; }
       void set_velocity(const Tensor<1, 2> &v) override { tool_velocity = v; }
       Tensor<1, 2> displacement() const override { return offset; }
@@ -78,7 +78,7 @@ namespace formsolve
       std::vector<std::array<Tensor<1, 2>, 2>> corner_normal;
       /// Normal for the sign at each end (the mean of the segments there).
       std::vector<std::array<Tensor<1, 2>, 2>> end_normal;
-      std::vector<unsigned int>                bends; // segments bent over
+      std::vector<unsigned int>                bends;     // segments bent over
       Point<2>                                 low, high; // bounding box
       std::string                              note;
       Tensor<1, 2>                             tool_velocity;
