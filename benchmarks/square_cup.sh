@@ -3,7 +3,7 @@
 # 40 mm on 2 ranks: analytic tools, meshed tools (1 mm facets) and the Hill48
 # variant (analytic tools). Writes the runs to OUTDIR (results/square-cup
 # unless given), the thickness-strain CSV and PNG files into each run folder,
-# and prints the table of doc/tools.md section 2. About 45 min.
+# and prints the table of doc/tools.md section 2. About 70 min (2 cores).
 #   bash benchmarks/square_cup.sh [OUTDIR]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Every figure of doc/tools.md: the contact search against the facet count
 # (tool_search.sh, section 1) and the square cup (square_cup.sh, section 2).
-# About 55 min on 2 cores; the tables go to stdout, the runs to results/.
+# The square cup takes about 70 min on 2 cores; the tables go to stdout, the
+# runs to results/.
 #   bash benchmarks/tools.sh
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
