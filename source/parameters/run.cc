@@ -133,6 +133,104 @@ namespace formsolve
       return true;
     }
 
+    namespace
+    {
+      /// Every tool's shape and placement against the model.
+      void check_tool_shapes(const Run &run)
+      {
+        const bool axi = run.geometry.model == model::Model::axisymmetric;
+        for (const auto &t : run.tools.additional)
+          t.validate(axi,
+                     model::symmetric_in_x(run.geometry.model),
+                     model::symmetric_in_y(run.geometry.model));
+        std::vector<const Tool *> all = {&run.tools.punch,
+                                         &run.tools.die,
+                                         &run.tools.blank_holder};
+        for (const auto &t : run.tools.additional)
+          all.push_back(&t);
+        for (const Tool *t : all)
+          {
+            require(!axi || !t->enabled ||
+                      t->shape != ToolShape::rounded_rectangle,
+                    "Tools/" + t->name + "/Shape",
+                    "must be round, flat or mesh (an r-z profile) for "
+                    "Geometry/Model = axisymmetric");
+            require(!axi || !t->enabled || t->shape != ToolShape::mesh ||
+                      (t->mesh_offset[0] == 0 && t->mesh_offset[1] == 0),
+                    "Tools/" + t->name + "/Mesh offset",
+                    "the axisymmetric model moves a profile along z only "
+                    "(give 0, 0, z)");
+          }
+      }
+
+      /// The outlines of punch, die and holder must fit together.
+      void check_outlines(const Run &run)
+      {
+        const Tools &tools = run.tools;
+        if (tools.die.enabled && tools.die.shape == ToolShape::round &&
+            run.geometry.blank_shape == BlankShape::round)
+          require(run.geometry.blank_diameter > tools.die.diameter,
+                  "Geometry/Blank diameter",
+                  "must exceed Tools/Die/Diameter, or the blank falls "
+                  "through the die");
+        const double t0         = run.geometry.thickness;
+        const auto   punch_half = half_sizes(tools.punch),
+                   die_half     = half_sizes(tools.die),
+                   holder_half  = half_sizes(tools.blank_holder);
+        if (tools.die.enabled && tools.punch.has_outline() &&
+            tools.die.has_outline())
+          for (unsigned int a = 0; a < 2; ++a)
+            {
+              std::ostringstream what;
+              what << "the punch (half size " << punch_half[a]
+                   << " mm) does not fit into the die opening (half size "
+                   << die_half[a]
+                   << " mm): the clearance must be positive; a clearance "
+                      "below the sheet thickness (Geometry/Thickness = "
+                   << t0 << " mm) irons the wall and gets a warning";
+              require(die_half[a] - punch_half[a] > 0,
+                      tools.punch.shape == ToolShape::round
+                        ? "Tools/Punch/Diameter"
+                        : "Tools/Punch/Length",
+                      what.str());
+            }
+        if (tools.blank_holder.enabled && tools.blank_holder.has_outline() &&
+            tools.die.enabled && tools.die.has_outline())
+          for (unsigned int a = 0; a < 2; ++a)
+            require(holder_half[a] >= die_half[a],
+                    "Tools/Blank holder/Diameter",
+                    "the holder's opening (" + str(2 * holder_half[a]) +
+                      " mm) lies inside the die opening "
+                      "(Tools/Die/Diameter = " +
+                      str(2 * die_half[a]) +
+                      " mm): it would press the sheet into the die");
+      }
+
+      /// Refuse meshes the machine cannot hold, before building them.
+      void check_memory(const Run &run)
+      {
+        const double cells = initial_cells(run.geometry, run.mesh);
+        if (cells <= 0)
+          return;
+        const double dim  = model::space_dimension(run.geometry.model);
+        const double dofs = dim * cells * std::pow(run.mesh.degree, dim) *
+                            (1 + 1. / run.mesh.layers);
+        const auto [per_dof, setting] = memory_per_dof(run);
+        const double needed = per_dof * dofs, available = available_memory();
+        std::ostringstream what;
+        what << "gives about " << cells << " cells and " << dofs
+             << " DoFs, which need about " << needed / 1e9 << " GB ("
+             << per_dof / 1e3 << " kB per DoF with " << setting
+             << "), more than 80 % of the " << available / 1e9
+             << " GB available; lower Mesh/Planform refinements or "
+                "Mesh/Layers through thickness, or set Linear "
+                "solver/Out-of-core directory";
+        require(available == 0 || needed < 0.8 * available,
+                "Mesh/Planform refinements",
+                what.str());
+      }
+    } // namespace
+
     void Run::validate() const
     {
       geometry.validate();
@@ -146,36 +244,9 @@ namespace formsolve
       linear.validate();
       output.validate();
 
-      const bool axi = geometry.model == model::Model::axisymmetric;
-      for (const auto &t : tools.additional)
-        t.validate(axi,
-                   model::symmetric_in_x(geometry.model),
-                   model::symmetric_in_y(geometry.model));
-      std::vector<const Tool *> all = {&tools.punch,
-                                       &tools.die,
-                                       &tools.blank_holder};
-      for (const auto &t : tools.additional)
-        all.push_back(&t);
-      for (const Tool *t : all)
-        {
-          require(!axi || !t->enabled ||
-                    t->shape != ToolShape::rounded_rectangle,
-                  "Tools/" + t->name + "/Shape",
-                  "must be round, flat or mesh (an r-z profile) for "
-                  "Geometry/Model = axisymmetric");
-          require(!axi || !t->enabled || t->shape != ToolShape::mesh ||
-                    (t->mesh_offset[0] == 0 && t->mesh_offset[1] == 0),
-                  "Tools/" + t->name + "/Mesh offset",
-                  "the axisymmetric model moves a profile along z only "
-                  "(give 0, 0, z)");
-        }
-      if (tools.die.enabled && tools.die.shape == ToolShape::round &&
-          geometry.blank_shape == BlankShape::round)
-        require(
-          geometry.blank_diameter > tools.die.diameter,
-          "Geometry/Blank diameter",
-          "must exceed Tools/Die/Diameter, or the blank falls through the die");
-      require(!axi || !material.anisotropy.planar(),
+      check_tool_shapes(*this);
+      require(geometry.model != model::Model::axisymmetric ||
+                !material.anisotropy.planar(),
               material.anisotropy.calibration == HillCalibration::r_values
                 ? "Material/R-values"
                 : "Material/Yield stress ratios",
@@ -183,7 +254,8 @@ namespace formsolve
                 ") varies around the cup, which an axisymmetric section "
                 "cannot represent: give one normal r-value here, or use "
                 "Geometry/Model = quarter (earing needs a 3-D model)");
-      require(!output.revolved_copy || axi,
+      require(!output.revolved_copy ||
+                geometry.model == model::Model::axisymmetric,
               "Output/Revolved copy",
               "is only available for Geometry/Model = axisymmetric");
       require(time.end_of_run != EndOfRun::holder_release ||
@@ -192,64 +264,13 @@ namespace formsolve
               "Time stepping/End of run",
               "'holder release' needs an enabled blank holder with an "
               "opening (Shape round or rounded rectangle)");
-      // The scene must fit together.
-      const double t0         = geometry.thickness;
-      const auto   punch_half = half_sizes(tools.punch),
-                 die_half     = half_sizes(tools.die),
-                 holder_half  = half_sizes(tools.blank_holder);
-      if (tools.die.enabled && tools.punch.has_outline() &&
-          tools.die.has_outline())
-        for (unsigned int a = 0; a < 2; ++a)
-          {
-            std::ostringstream what;
-            what << "the punch (half size " << punch_half[a]
-                 << " mm) does not fit into the die opening (half size "
-                 << die_half[a]
-                 << " mm): the clearance must be positive; a clearance "
-                    "below the sheet thickness (Geometry/Thickness = "
-                 << t0 << " mm) irons the wall and gets a warning";
-            require(die_half[a] - punch_half[a] > 0,
-                    tools.punch.shape == ToolShape::round
-                      ? "Tools/Punch/Diameter"
-                      : "Tools/Punch/Length",
-                    what.str());
-          }
-      if (tools.blank_holder.enabled && tools.blank_holder.has_outline() &&
-          tools.die.enabled && tools.die.has_outline())
-        for (unsigned int a = 0; a < 2; ++a)
-          require(holder_half[a] >= die_half[a],
-                  "Tools/Blank holder/Diameter",
-                  "the holder's opening (" + str(2 * holder_half[a]) +
-                    " mm) lies inside the die opening (Tools/Die/Diameter = " +
-                    str(2 * die_half[a]) +
-                    " mm): it would press the sheet into the die");
-
-      // Refuse meshes the machine cannot hold, before building them.
-      const double cells = initial_cells(geometry, mesh);
-      if (cells > 0)
-        {
-          const double dim = model::space_dimension(geometry.model);
-          const double dofs =
-            dim * cells * std::pow(mesh.degree, dim) * (1 + 1. / mesh.layers);
-          const auto [per_dof, setting] = memory_per_dof(*this);
-          const double needed = per_dof * dofs, available = available_memory();
-          std::ostringstream what;
-          what << "gives about " << cells << " cells and " << dofs
-               << " DoFs, which need about " << needed / 1e9 << " GB ("
-               << per_dof / 1e3 << " kB per DoF with " << setting
-               << "), more than 80 % of the " << available / 1e9
-               << " GB available; lower Mesh/Planform refinements or "
-                  "Mesh/Layers through thickness, or set Linear "
-                  "solver/Out-of-core directory";
-          require(available == 0 || needed < 0.8 * available,
-                  "Mesh/Planform refinements",
-                  what.str());
-        }
       require(time.end_of_run != EndOfRun::draw_through ||
                 (tools.die.enabled && tools.die.has_outline()),
               "Time stepping/End of run",
               "'draw-through' needs an enabled die with an opening (Shape "
               "round or rounded rectangle)");
+      check_outlines(*this);
+      check_memory(*this);
     }
   } // namespace parameters
 } // namespace formsolve

@@ -139,17 +139,29 @@ namespace formsolve
                                    const FormingMeasures<dim> &forming,
                                    const double                wall_time)
     {
-      const auto        &tools = state.tools;
-      const double       sym   = state.prm.geometry.symmetry_factor();
-      const unsigned int z     = dim - 1;
       for (auto *t : {&table, &solver_table})
         {
           t->set("step", state.step);
           t->set("time", state.time);
-          t->set("punch_travel", tools.punch_travel());
+          t->set("punch_travel", state.tools.punch_travel());
         }
-      solver_table.set("time_step", report.dt);
-      solver_table.set("cutbacks", report.cutbacks);
+      set_tool_columns(state, stats);
+      set_solver_columns(state, report, stats);
+      set_forming_columns(state, forming);
+      solver_table.set("wall_time",
+                       state.prm.output.wall_time_in_history ? wall_time : 0.);
+      table.write_row();
+      solver_table.write_row();
+    }
+
+    template <int dim>
+    void HistoryWriter<dim>::set_tool_columns(
+      const state::State<dim>               &state,
+      const contact::ContactStatistics<dim> &stats)
+    {
+      const auto        &tools = state.tools;
+      const double       sym   = state.prm.geometry.symmetry_factor();
+      const unsigned int z     = dim - 1;
       // Axial (z) forces of the sheet on the tools, full part, pressing = +.
       table.set("punch_force", sym * stats.tool_force[tools.punch_index()][z]);
       table.set("force_travel", stats.force_travel);
@@ -167,12 +179,6 @@ namespace formsolve
           const auto *control = state.force_control(tools.holder_index());
           table.set("holder_engaged", control && control->active ? 1 : 0);
         }
-      double sum_z = 0, magnitude_z = 0;
-      for (unsigned int t = 0; t < tools.size(); ++t)
-        {
-          sum_z += stats.tool_force[t][z];
-          magnitude_z += std::abs(stats.tool_force[t][z]);
-        }
       for (unsigned int t = tools.first_additional(); t < tools.size(); ++t)
         {
           const Tensor<1, dim> &d = tools.motion(t).direction;
@@ -180,9 +186,27 @@ namespace formsolve
           table.set("force_along_" + tools.key(t),
                     -sym * (stats.tool_force[t] * d));
         }
+    }
+
+    template <int dim>
+    void HistoryWriter<dim>::set_solver_columns(
+      const state::State<dim>               &state,
+      const solver::StepReport              &report,
+      const contact::ContactStatistics<dim> &stats)
+    {
+      const auto        &tools = state.tools;
+      const unsigned int z     = dim - 1;
+      solver_table.set("time_step", report.dt);
+      solver_table.set("cutbacks", report.cutbacks);
       // The sheet's equilibrium along z, where nothing but the tools holds
       // it: the tools' z forces sum to zero within Newton's tolerance. As a
       // fraction of their magnitudes, so that round-off stays below 1e-10.
+      double sum_z = 0, magnitude_z = 0;
+      for (unsigned int t = 0; t < tools.size(); ++t)
+        {
+          sum_z += stats.tool_force[t][z];
+          magnitude_z += std::abs(stats.tool_force[t][z]);
+        }
       solver_table.set("force_imbalance_z",
                        magnitude_z > 0 ? sum_z / magnitude_z : 0.);
       solver_table.set("max_penetration", stats.max_penetration);
@@ -202,7 +226,15 @@ namespace formsolve
       solver_table.set("max_linear_iterations", report.max_linear_iterations);
       solver_table.set("condition_estimate", report.condition_estimate);
       solver_table.set("dofs", state.dof_handler.n_dofs());
-      solver_table.set("volume", sym * volume(state));
+      solver_table.set("volume",
+                       state.prm.geometry.symmetry_factor() * volume(state));
+    }
+
+    template <int dim>
+    void
+    HistoryWriter<dim>::set_forming_columns(const state::State<dim>    &state,
+                                            const FormingMeasures<dim> &forming)
+    {
       table.set("max_equivalent_strain",
                 maximum(state, &state::QuadraturePointHistory::strain).value);
       const auto &sheet = forming.sheet;
@@ -242,10 +274,6 @@ namespace formsolve
                 forming.through_thickness.cockcroft_latham.value);
       for (unsigned int z = 0; z < zone_columns.size(); ++z)
         table.set(zone_columns[z], sheet.zone_count[z]);
-      solver_table.set("wall_time",
-                       state.prm.output.wall_time_in_history ? wall_time : 0.);
-      table.write_row();
-      solver_table.write_row();
     }
 
 #define INSTANTIATE(dim) template class HistoryWriter<dim>;

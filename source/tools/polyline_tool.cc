@@ -36,6 +36,53 @@ namespace formsolve
         n[1] = a[0] - b[0];
         return n / n.norm();
       }
+      using Chain = std::vector<std::array<unsigned int, 2>>;
+
+      /// > 0 if the open @p chain must be reversed to face the sheet: the
+      /// side the sheet's mid-plane (z = @p sheet_z) sees along z; each
+      /// segment seen from it without another line in between votes with its
+      /// horizontal extent. 0: the sheet sees nothing of it.
+      double
+      sheet_side_turn(const Chain                                    &chain,
+                      const std::vector<Point<2>>                    &points,
+                      const std::vector<std::array<unsigned int, 2>> &segments,
+                      const double                                    sheet_z)
+      {
+        double turn = 0;
+        for (const auto &s : chain)
+          {
+            const Point<2>     m = 0.5 * (points[s[0]] + points[s[1]]);
+            const Tensor<1, 2> n = right_normal(points[s[0]], points[s[1]]);
+            const double       to_plane = sheet_z - m[1];
+            const double       length   = points[s[0]].distance(points[s[1]]);
+            if (std::abs(to_plane) < 1e-9 * length || n[1] == 0)
+              continue;
+            const Point<2> a(m[0],
+                             m[1] + 1e-9 * length * (to_plane > 0 ? 1 : -1)),
+              b(m[0], sheet_z);
+            bool hidden = false;
+            for (const auto &o : segments)
+              if ((o[0] != s[0] || o[1] != s[1]) &&
+                  (o[0] != s[1] || o[1] != s[0]) &&
+                  segments_cross(a, b, points[o[0]], points[o[1]]))
+                hidden = true;
+            if (!hidden)
+              turn -= (to_plane > 0 ? 1 : -1) * n[1] * length;
+          }
+        return turn;
+      }
+
+      /// > 0 if the closed @p chain must be reversed to face outwards:
+      /// counter-clockwise in (r, z) faces outwards on the right.
+      double outward_turn(const Chain                 &chain,
+                          const std::vector<Point<2>> &points)
+      {
+        double turn = 0;
+        for (const auto &s : chain)
+          turn += points[s[0]][0] * points[s[1]][1] -
+                  points[s[1]][0] * points[s[0]][1];
+        return -turn;
+      }
     } // namespace
 
     PolylineTool::PolylineTool(const std::string  &name,
@@ -136,9 +183,9 @@ namespace formsolve
           {
             if (at[start].empty() || (open && at[start].size() != 1))
               continue;
-            std::vector<std::array<unsigned int, 2>> chain;
-            unsigned int                             v        = start;
-            unsigned int                             as_given = 0;
+            Chain        chain;
+            unsigned int v        = start;
+            unsigned int as_given = 0;
             for (;;)
               {
                 int next = -1;
@@ -156,50 +203,16 @@ namespace formsolve
               }
             if (chain.empty())
               continue;
-            double turn = 0; // > 0: the chain must be reversed
-            if (!open)
-              {
-                // Counter-clockwise in (r, z) faces outwards on the right.
-                for (const auto &s : chain)
-                  turn += points[s[0]][0] * points[s[1]][1] -
-                          points[s[1]][0] * points[s[0]][1];
-                turn = -turn;
-              }
-            else
-              {
-                // The side the sheet's mid-plane sees along z: each segment
-                // seen from it without another line in between votes with
-                // its horizontal extent.
-                for (const auto &s : chain)
-                  {
-                    const Point<2>     m = 0.5 * (points[s[0]] + points[s[1]]);
-                    const Tensor<1, 2> n =
-                      right_normal(points[s[0]], points[s[1]]);
-                    const double to_plane = sheet_z - m[1];
-                    const double length   = points[s[0]].distance(points[s[1]]);
-                    if (std::abs(to_plane) < 1e-9 * length || n[1] == 0)
-                      continue;
-                    const Point<2> a(m[0],
-                                     m[1] +
-                                       1e-9 * length * (to_plane > 0 ? 1 : -1)),
-                      b(m[0], sheet_z);
-                    bool hidden = false;
-                    for (const auto &o : segments)
-                      if ((o[0] != s[0] || o[1] != s[1]) &&
-                          (o[0] != s[1] || o[1] != s[0]) &&
-                          segments_cross(a, b, points[o[0]], points[o[1]]))
-                        hidden = true;
-                    if (!hidden)
-                      turn -= (to_plane > 0 ? 1 : -1) * n[1] * length;
-                  }
-                AssertThrow(turn != 0,
-                            ExcMessage(file +
-                                       ": an open profile of which the "
-                                       "sheet sees nothing along z, so its "
-                                       "working side cannot be told; give "
-                                       "the tool's closed section, or place "
-                                       "it facing the sheet (Mesh offset)"));
-              }
+            // > 0: the chain must be reversed.
+            const double turn =
+              open ? sheet_side_turn(chain, points, segments, sheet_z)
+                   : outward_turn(chain, points);
+            AssertThrow(!open || turn != 0,
+                        ExcMessage(file + ": an open profile of which the "
+                                          "sheet sees nothing along z, so its "
+                                          "working side cannot be told; give "
+                                          "the tool's closed section, or place "
+                                          "it facing the sheet (Mesh offset)"));
             if (turn > 0)
               {
                 std::reverse(chain.begin(), chain.end());

@@ -44,6 +44,17 @@ namespace formsolve
                  const double                           wall_time);
 
     private:
+      /// history.csv: the tools' forces and positions.
+      void set_tool_columns(const state::State<dim>               &state,
+                            const contact::ContactStatistics<dim> &stats);
+      /// solver.csv: how the step was solved and its checks.
+      void set_solver_columns(const state::State<dim>               &state,
+                              const solver::StepReport              &report,
+                              const contact::ContactStatistics<dim> &stats);
+      /// history.csv: thickness, strains, damage, draw-in, zones.
+      void set_forming_columns(const state::State<dim>    &state,
+                               const FormingMeasures<dim> &forming);
+
       StatisticsTable table, solver_table;
     };
   } // namespace postprocess
