@@ -275,6 +275,24 @@ namespace formsolve
       else
         {
           estimate_at(set, tools, system, state, eps, stiffness_of);
+          // Hanging nodes take their masters' bounded estimate (their own
+          // tangent diagonal is no stiffness of theirs), then their own
+          // strict scale acts on it, as every other node's does.
+          std::vector<bool> is_hanging(n, false);
+          if (!reuse)
+            {
+              std::vector<double> masters(n);
+              for (unsigned int k = 0; k < n; ++k)
+                masters[k] = bounded(eps[k], stiffness_of[k]);
+              interpolate_hanging(set,
+                                  *system.constraints,
+                                  *system.residual,
+                                  is_hanging,
+                                  masters);
+              for (unsigned int k = 0; k < n; ++k)
+                if (is_hanging[k])
+                  eps[k] = masters[k];
+            }
           for (unsigned int k = 0; k < n; ++k)
             {
               ContactRecord &record =
@@ -284,22 +302,10 @@ namespace formsolve
               else if (record.factor <= 0)
                 record.factor = start_factor(set, tools, state, k);
               // The strict scale acts within the bounds: Upper bound bounds it.
-              epsilon[k] = reuse
-                             ? last_epsilon[k]
+              epsilon[k] = reuse ? last_epsilon[k]
+                           : is_hanging[k]
+                             ? eps[k] * record.scale
                              : bounded(eps[k] * record.scale, stiffness_of[k]);
-            }
-          if (!reuse)
-            {
-              std::vector<bool> is_hanging;
-              interpolate_hanging(set,
-                                  *system.constraints,
-                                  *system.residual,
-                                  is_hanging,
-                                  epsilon);
-              for (unsigned int k = 0; k < n; ++k)
-                if (is_hanging[k])
-                  state(set.pairs[k].node, set.pairs[k].tool).factor =
-                    epsilon[k];
             }
         }
       record_statistics(active, epsilon, stiffness_of, comm);
