@@ -20,7 +20,7 @@ using namespace formsolve;
 
 namespace
 {
-  const double delta = 1e-3, dt = 0.25, F0 = 300, F1 = 500;
+  const double       delta = 1e-3, dt = 0.25, F0 = 300, F1 = 500;
   const unsigned int n_dofs = 9; // three nodes, x y z each
 
   struct Masters
@@ -112,8 +112,7 @@ int main(int argc, char **argv)
   // The strict check: master 0 and the hanging node are 2 and 3 delta deep.
   s.set.pairs[0].predicted_gap = -2 * delta;
   s.set.pairs[2].predicted_gap = -3 * delta;
-  const bool again =
-    adaptive.tighten(s.set, tools, state, MPI_COMM_WORLD);
+  const bool again = adaptive.tighten(s.set, tools, state, MPI_COMM_WORLD);
   test::close("strict check asks for another pass", again, 1, 0);
   adaptive.begin_solve();
   adaptive.estimate(s.set, tools, s.system(), state, eps);
