@@ -13,6 +13,7 @@
 #include <formsolve/contact/strategies/adaptive.h>
 
 #include "check.h"
+#include "flat_punch.h"
 
 using namespace dealii;
 using namespace formsolve;
@@ -67,20 +68,10 @@ int main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  parameters::Tools tool_prm;
-  tool_prm.punch.shape                = parameters::ToolShape::flat;
-  tool_prm.punch.friction_coefficient = 0;
-  tool_prm.punch.allowed_penetration  = delta;
-  tool_prm.die.enabled                = false;
-  tool_prm.blank_holder.enabled       = false;
-  parameters::Contact prm;
-  prm.penalty_factor      = 1;
-  prm.allowed_penetration = delta;
-  prm.lower_bound         = 1e-6;
-  prm.upper_bound         = 1e6;
-  prm.freeze              = false;
-  prm.damping             = 1e300;
-  prm.target_fraction     = 1;
+  const parameters::Tools tool_prm = test::flat_punch_only(delta);
+  parameters::Contact     prm      = test::undamped_adaptive(delta);
+  prm.lower_bound                  = 1e-6;
+  prm.upper_bound                  = 1e6;
   const tools::ToolSet<3> tools(tool_prm, prm, 1.);
   const double            record = 2e5; // N/mm, from an earlier solve
 

@@ -8,6 +8,7 @@
 #include <formsolve/contact/strategies/adaptive.h>
 
 #include "check.h"
+#include "flat_punch.h"
 
 using namespace dealii;
 using namespace formsolve;
@@ -34,20 +35,10 @@ int main(int argc, char **argv)
   AffineConstraints<double> constraints;
   constraints.close();
 
-  parameters::Tools tool_prm;
-  tool_prm.punch.shape                = parameters::ToolShape::flat;
-  tool_prm.punch.friction_coefficient = 0;
-  tool_prm.punch.allowed_penetration  = delta;
-  tool_prm.die.enabled                = false;
-  tool_prm.blank_holder.enabled       = false;
-  parameters::Contact contact_prm;
-  contact_prm.penalty_factor      = 1;
-  contact_prm.allowed_penetration = delta;
-  contact_prm.lower_bound         = 1e-3;
-  contact_prm.upper_bound         = 1e6;
-  contact_prm.freeze              = false;
-  contact_prm.damping             = 1e300; // no damping: test the estimate
-  contact_prm.target_fraction     = 1;     // the published method aims at delta
+  const parameters::Tools tool_prm    = test::flat_punch_only(delta);
+  parameters::Contact     contact_prm = test::undamped_adaptive(delta);
+  contact_prm.lower_bound             = 1e-3;
+  contact_prm.upper_bound             = 1e6;
 
   const tools::ToolSet<3> tools(tool_prm, contact_prm, 1.);
 
