@@ -86,6 +86,52 @@ namespace formsolve
         else if (form == 2)
           tangent.add_general(q, B, material.tangent(m, w_rate) * dV);
       }
+
+      /// Stress-velocity linearisation: (4/9) s/rate^3 D'(x)D' becomes its
+      /// symmetric part with one D' replaced by rate w, w the trial dual
+      /// direction of the point.
+      template <typename CellIterator>
+      SymmetricTensor<2, 3>
+      dual_rate(DualStress                        &dual,
+                const material::RigidViscoplastic &material,
+                const material::PointResponse     &m,
+                const CellIterator                &cell,
+                const unsigned int                 q)
+      {
+        return dual.trial(cell->active_cell_index(),
+                          q,
+                          m.strain_rate_deviator,
+                          material.cutoff_rate(),
+                          material.smooth_rigid_zone()) *
+               m.dual_rate;
+      }
+
+      /// Incompressibility by penalty at the reduced points (reduced
+      /// integration against locking): r_i += K_v div(v) tr(B_i) dV, and its
+      /// tangent if @p with_tangent.
+      template <int dim>
+      void add_volumetric(const CellKinematics<dim> &kr,
+                          const std::vector<double> &div_v,
+                          const double               Kv,
+                          const bool                 with_tangent,
+                          std::vector<ShapeStrain>  &B,
+                          std::vector<double>       &tr,
+                          CellTangent<dim>          &tangent,
+                          Vector<double>            &r)
+      {
+        for (unsigned int q = 0; q < kr.n_points(); ++q)
+          {
+            const double dV = kr.dV(q);
+            kr.shape_strains(q, B);
+            for (unsigned int i = 0; i < B.size(); ++i)
+              {
+                tr[i] = B[i].trace();
+                r[i] += Kv * div_v[q] * tr[i] * dV;
+              }
+            if (with_tangent)
+              tangent.add_volumetric(q, tr, Kv * dV);
+          }
+      }
     } // namespace
 
     template <int dim>
@@ -171,19 +217,10 @@ namespace formsolve
                                     hill ? &orientation.map(q) : nullptr);
                 const double dV = kf.dV(q);
                 kf.shape_strains(q, B);
-                // Stress-velocity linearisation: (4/9) s/rate^3 D'(x)D' becomes
-                // its symmetric part with one D' replaced by rate w.
-                SymmetricTensor<2, 3> w_rate = m.strain_rate_deviator;
-                if (dual)
-                  w_rate = dual->trial(cell->active_cell_index(),
-                                       q,
-                                       m.strain_rate_deviator,
-                                       material.cutoff_rate(),
-                                       material.smooth_rigid_zone()) *
-                           m.dual_rate;
                 add_point(material,
                           m,
-                          w_rate,
+                          dual ? dual_rate(*dual, material, m, cell, q)
+                               : m.strain_rate_deviator,
                           dual != nullptr,
                           hill ? &orientation.map(q) : nullptr,
                           q,
@@ -195,21 +232,8 @@ namespace formsolve
                           s,
                           u);
               }
-            // Incompressibility by penalty, reduced integration against
-            // locking.
             state::volumetric_rates(kr, v, dt, h[0]->volume_offset, Dr, div_v);
-            for (unsigned int q = 0; q < kr.n_points(); ++q)
-              {
-                const double dV = kr.dV(q);
-                kr.shape_strains(q, B);
-                for (unsigned int i = 0; i < n; ++i)
-                  {
-                    tr[i] = B[i].trace();
-                    r[i] += Kv * div_v[q] * tr[i] * dV;
-                  }
-                if (matrix)
-                  tangent.add_volumetric(q, tr, Kv * dV);
-              }
+            add_volumetric(kr, div_v, Kv, matrix != nullptr, B, tr, tangent, r);
             if (matrix)
               tangent.finish(K);
             f_int2 += r.norm_sqr();
