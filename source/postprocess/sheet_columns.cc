@@ -15,22 +15,59 @@ namespace formsolve
   {
     using namespace dealii;
 
+    namespace
+    {
+      /// A node column of the sheet while the ranks' records are summed: its
+      /// top and bottom nodes, and the mid-plane cell corners that meet there.
+      template <int dim>
+      struct Column
+      {
+        bool                   top = false, bottom = false, rim = false;
+        dealii::Point<dim>     x_top, x_bottom, mid;
+        dealii::Tensor<1, dim> normal;
+        double                 major = 0, minor = 0, damage = 0;
+        unsigned int           n = 0;
+      };
+
+      /// The measures of a column with a top and a bottom node at reference
+      /// position @p X (all but the safety zone).
+      template <int dim>
+      SheetColumn<dim> measures(const Column<dim>        &c,
+                                const dealii::Point<dim> &X)
+      {
+        SheetColumn<dim> s;
+        s.reference_radius = dim == 2 ? X[0] : std::hypot(X[0], X[1]);
+        s.reference_angle =
+          dim == 2 ? 0. : std::atan2(X[1], X[0]) * 180. / M_PI;
+        const dealii::Tensor<1, dim> across = c.x_top - c.x_bottom;
+        if (c.n > 0)
+          {
+            s.mid       = c.mid / double(c.n);
+            s.thickness = std::abs(across * (c.normal / c.normal.norm()));
+            s.major     = c.major / c.n;
+            s.minor     = c.minor / c.n;
+          }
+        else // no mid-plane cell corner here (e.g. a Q2 mid-edge node)
+          {
+            s.mid       = c.x_bottom + 0.5 * across;
+            s.thickness = across.norm();
+          }
+        s.damage = c.damage;
+        s.rim    = c.rim;
+        s.top    = std::max(c.x_top[dim - 1], c.x_bottom[dim - 1]);
+        s.bottom = std::min(c.x_top[dim - 1], c.x_bottom[dim - 1]);
+        return s;
+      }
+    } // namespace
+
     template <int dim>
     void SheetMeasures<dim>::assemble_columns(
       const std::vector<std::vector<double>> &all_nodes,
       const std::vector<std::vector<double>> &all_cells,
       const std::vector<std::vector<double>> &all_damages)
     {
-      constexpr unsigned int nk = dim - 1, nc = n_corners;
-      struct Column
-      {
-        bool           top = false, bottom = false, rim = false;
-        Point<dim>     x_top, x_bottom, mid;
-        Tensor<1, dim> normal;
-        double         major = 0, minor = 0, damage = 0;
-        unsigned int   n = 0;
-      };
-      std::map<Key, Column>            columns;
+      constexpr unsigned int           nk = dim - 1, nc = n_corners;
+      std::map<Key, Column<dim>>       columns;
       std::vector<std::array<Key, nc>> mid_cells; // corner keys
       auto read_key = [&](const std::vector<double> &v, std::size_t &i) {
         Key k;
@@ -91,37 +128,16 @@ namespace formsolve
           }
 
       for (const auto &[k, c] : columns)
-        {
-          if (!c.top || !c.bottom)
-            continue;
-          SheetColumn<dim> s;
-          Point<dim>       X;
-          for (unsigned int d = 0; d < nk; ++d)
-            X[d] = k[d] * quantum;
-          s.reference_radius = dim == 2 ? X[0] : std::hypot(X[0], X[1]);
-          s.reference_angle =
-            dim == 2 ? 0. : std::atan2(X[1], X[0]) * 180. / M_PI;
-          const Tensor<1, dim> across = c.x_top - c.x_bottom;
-          if (c.n > 0)
-            {
-              s.mid       = c.mid / double(c.n);
-              s.thickness = std::abs(across * (c.normal / c.normal.norm()));
-              s.major     = c.major / c.n;
-              s.minor     = c.minor / c.n;
-            }
-          else // no mid-plane cell corner here (e.g. a Q2 mid-edge node)
-            {
-              s.mid       = c.x_bottom + 0.5 * across;
-              s.thickness = across.norm();
-            }
-          s.damage = c.damage;
-          s.rim    = c.rim;
-          s.top    = std::max(c.x_top[dim - 1], c.x_bottom[dim - 1]);
-          s.bottom = std::min(c.x_top[dim - 1], c.x_bottom[dim - 1]);
-          s.zone   = flc.zone(s.minor, s.major, s.damage);
-          cols.push_back(s);
-          keys.push_back(k);
-        }
+        if (c.top && c.bottom)
+          {
+            Point<dim> X;
+            for (unsigned int d = 0; d < nk; ++d)
+              X[d] = k[d] * quantum;
+            SheetColumn<dim> s = measures(c, X);
+            s.zone             = flc.zone(s.minor, s.major, s.damage);
+            cols.push_back(s);
+            keys.push_back(k);
+          }
       cell_centre_thickness(mid_cells);
     }
 
