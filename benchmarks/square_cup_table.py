@@ -7,7 +7,8 @@ start of a step (force_travel): at 15 mm the next step's, at 40 mm the last
 step's (its travel given). Below the table: the second run against the
 first over the whole draw (the second interpolated to the first's travels):
 largest draw-in difference; punch force from 2 mm to the first's peak
-(median and largest, with where) and at the end."""
+(median and largest, with where) and at the end; then both every 5 mm from
+15 mm (the mesh-convergence table of doc/tools.md)."""
 import os
 import re
 import sys
@@ -83,6 +84,30 @@ def compare(first, second):
           f"at {before[-1][1]:.2f} mm; {100 * force(a[-1]):.2f} % at the end")
 
 
+def by_travel(first, second):
+    """The second run against the first every 5 mm from 15 mm: draw-in on the
+    x axis and the diagonal, punch force and minimum thickness (both runs
+    interpolated to the travel)."""
+    a, b = steps(first), steps(second)
+    end = min(float(a[-1]["punch_travel"]), float(b[-1]["punch_travel"]))
+    print("\n| travel | draw_in_x, first / second | draw_in_diagonal, first / second "
+          "| punch force | minimum thickness |")
+    print("|---|---|---|---|---|")
+    travel = 15.
+    while travel <= end + 1e-9:
+        cells = []
+        for key in ("draw_in_x", "draw_in_diagonal"):
+            x, y = interpolate(a, key, travel), interpolate(b, key, travel)
+            cells.append(f"{x:.3f} / {y:.3f} ({y - x:+.3f}) mm")
+        fa = interpolate(a, "punch_force", travel, "force_travel")
+        fb = interpolate(b, "punch_force", travel, "force_travel")
+        cells.append(f"{100 * (fb / fa - 1):+.1f} %")
+        ta, tb = (interpolate(r, "min_thickness", travel) for r in (a, b))
+        cells.append(f"{ta:.3f} / {tb:.3f} mm")
+        print(f"| {travel:.0f} mm | " + " | ".join(cells) + " |")
+        travel += 5
+
+
 def main():
     names, cols = [], []
     for arg in sys.argv[1:]:
@@ -95,6 +120,7 @@ def main():
         print(f"| {key} | " + " | ".join(c[key] for c in cols) + " |")
     if len(names) > 1:
         compare(sys.argv[1].split("=", 1)[1], sys.argv[2].split("=", 1)[1])
+        by_travel(sys.argv[1].split("=", 1)[1], sys.argv[2].split("=", 1)[1])
 
 
 main()
