@@ -4,7 +4,7 @@
 # (Planform refinements 6: 1.17 mm, 0.59 mm at the radii, 4x the cells),
 # drawn 40 mm on 2 ranks, against the run of benchmarks/square_cup.sh
 # (COARSE, default results/square-cup/square-cup-reference). Prints both
-# columns and the draw-in difference over the whole draw. More than 2 h on
+# columns and the draw-in difference over the whole draw. About 1 h 50 min on
 # 2 cores, so not part of benchmarks/tools.sh; a checkpoint every 10 steps,
 # and an interrupted run continues with RESUME=1 (doc/user-guide.md, 1.5).
 #   [RESUME=1] bash benchmarks/square_cup_convergence.sh [OUTDIR] [COARSE]
