@@ -11,13 +11,13 @@ namespace formsolve
         , dt(p.time_step)
     {}
 
-    bool StepControl::reject()
+    bool StepControl::reject(const double tried)
     {
       ++step_cutbacks;
-      const double cut = dt * prm.cutback_factor;
+      const double from = std::min(dt, tried);
       // One last try at the minimum itself before giving up.
-      if (dt > prm.minimum_time_step * (1 + 1e-12))
-        dt = std::max(cut, prm.minimum_time_step);
+      if (from > prm.minimum_time_step * (1 + 1e-12))
+        dt = std::max(from * prm.cutback_factor, prm.minimum_time_step);
       else
         return false;
       return step_cutbacks <= prm.max_cutbacks;

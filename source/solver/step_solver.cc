@@ -106,7 +106,7 @@ namespace formsolve
           state.restore(start);
           if (trial)
             return report;
-          const bool retry = control.reject();
+          const bool retry = control.reject(dt);
           report.cutbacks  = control.cutbacks();
           if (!retry)
             return report;

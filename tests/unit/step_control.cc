@@ -1,6 +1,7 @@
 // Step control: cuts on failure down to the minimum and no further, at most
-// Max cutbacks per step, grows after easy steps without cuts or after
-// Regrowth after steps hard ones in a row, never above the nominal time step.
+// Max cutbacks per step, from the step actually tried, grows after easy steps
+// without cuts or after Regrowth after steps hard ones in a row, never above
+// the nominal time step.
 #include <formsolve/solver/step_control.h>
 
 #include "check.h"
@@ -21,13 +22,13 @@ int main()
   solver::StepControl c(p);
   c.begin_step();
   test::close("starts at the nominal step", c.time_step(), 1, 0);
-  test::close("first cut allowed", c.reject(), 1, 0);
+  test::close("first cut allowed", c.reject(c.time_step()), 1, 0);
   test::close("first cut halves", c.time_step(), 0.5, 1e-15);
-  c.reject(); // 0.25
-  c.reject(); // 0.125
-  test::close("cut to the minimum, not below", c.reject(), 1, 0);
+  c.reject(c.time_step()); // 0.25
+  c.reject(c.time_step()); // 0.125
+  test::close("cut to the minimum, not below", c.reject(c.time_step()), 1, 0);
   test::close("at the minimum", c.time_step(), 0.1, 1e-15);
-  test::close("no try below the minimum", c.reject(), 0, 0);
+  test::close("no try below the minimum", c.reject(c.time_step()), 0, 0);
   test::close("cutbacks counted", c.cutbacks(), 5, 0);
 
   c.accept(3); // converged after cuts: no growth in this step
@@ -56,7 +57,7 @@ int main()
   p.regrowth_steps = 3;
   solver::StepControl e(p);
   e.begin_step();
-  e.reject(); // 0.5
+  e.reject(e.time_step()); // 0.5
   e.accept(10);
   for (int i = 0; i < 2; ++i)
     {
@@ -77,7 +78,7 @@ int main()
   e.accept(10);
   test::close("grows to the nominal step", e.time_step(), 1, 1e-15);
   e.begin_step();
-  e.reject(); // 0.5, the count restarts
+  e.reject(e.time_step()); // 0.5, the count restarts
   e.accept(10);
   e.begin_step();
   e.accept(10);
@@ -89,8 +90,18 @@ int main()
   p.max_cutbacks   = 2;
   solver::StepControl d(p);
   d.begin_step();
-  test::close("cut 1 of 2", d.reject(), 1, 0);
-  test::close("cut 2 of 2", d.reject(), 1, 0);
-  test::close("no third try", d.reject(), 0, 0);
+  test::close("cut 1 of 2", d.reject(d.time_step()), 1, 0);
+  test::close("cut 2 of 2", d.reject(d.time_step()), 1, 0);
+  test::close("no third try", d.reject(d.time_step()), 0, 0);
+
+  // A step shortened to land on a travel (0.2 of the nominal 1) fails: the
+  // retry is shorter than the step tried, not a cut of the nominal step that
+  // would still be longer and so retry the same 0.2.
+  p.max_cutbacks = 8;
+  solver::StepControl l(p);
+  l.begin_step();
+  test::close("a shortened step may be retried", l.reject(0.2), 1, 0);
+  test::close("cut from the step tried", l.time_step(), 0.1, 1e-15);
+  test::close("no cut below the minimum", l.reject(0.1), 0, 0);
   return test::result();
 }

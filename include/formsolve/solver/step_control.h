@@ -18,9 +18,12 @@ namespace formsolve
       double time_step() const { return dt; }
       /// A new step begins: its cutback count restarts.
       void begin_step() { step_cutbacks = 0; }
-      /// The last try failed: cut the time step. Returns whether another try
-      /// is allowed (at or above the minimum, within Max cutbacks).
-      bool reject();
+      /// The last try, with time step @p tried, failed: cut the time step.
+      /// The cut is from @p tried, which is below time_step() where the step
+      /// was shortened to land on a travel; cutting time_step() instead could
+      /// retry the same step unchanged. Returns whether another try is
+      /// allowed (at or above the minimum, within Max cutbacks).
+      bool reject(const double tried);
       /// The step converged in @p iterations Newton iterations: grow the
       /// time step after an easy step without cutbacks, or after Regrowth
       /// after steps such steps in a row.
