@@ -71,7 +71,7 @@ def section(label, angle):
     path = os.path.join(OUT, slug(label), "sheet.csv")
     if not os.path.exists(path):
         return []
-    cols = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(path))]
+    cols = [{k: float(v) for k, v in r.items() if k != "zone_name"} for r in csv.DictReader(open(path))]
     near = min(abs(c["reference_angle"] - angle) for c in cols if c["reference_radius"] > 1)
     bottom = min(c["z"] for c in cols)
     pts = [(c["reference_radius"], c["z"] - bottom, c["thickness"]) for c in cols

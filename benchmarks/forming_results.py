@@ -50,13 +50,14 @@ def run(name, material, d0, rp, refinements=5, layers=4, dt=0.25, force=False, e
         sets = {"Geometry/Blank diameter": d0, "Tools/Punch/Profile radius": rp,
                 "Tools/Blank holder/Force": round(siebel(d0, t0, rm, c=c)), "Tools/Punch/Stroke": 60,
                 "Mesh/Planform refinements": refinements, "Mesh/Layers through thickness": layers,
-                "Time stepping/Time step": dt, "Output/Stop at fracture": "true",
+                "Time stepping/Time step": dt, "Split/Measures": "fracture criterion",
+                "Split/Travel past the split": 0,
                 "Output/Output interval": 0, "Output/Report": "false", "Output/Revolved copy": "false",
                 "Output/Output directory": out, **(extra or {})}
         cmd = [EXE, prm] + sum((["--set", f"{k}={v}"] for k, v in sets.items()), [])
         with open(os.path.join(out, "log.txt"), "w") as log:
             code = subprocess.call(cmd, stdout=log, stderr=subprocess.STDOUT)
-        if code != 0:
+        if code != 0 and not os.path.exists(summary):
             with open(summary, "w") as f:  # a failed run is a result too
                 f.write("end_reason = failed: " + open(os.path.join(out, "log.txt")).read().strip().splitlines()[-1] + "\n")
     return dict(l.rstrip("\n").split(" = ", 1) for l in open(summary) if " = " in l)
@@ -66,7 +67,7 @@ def outcome(s):
     reason = s.get("end_reason", "")
     if reason.startswith("drawn through"):
         return "drawn"
-    if reason.startswith("fracture"):
+    if s.get("split_measure") == "fracture criterion":
         return "fracture"
     return "failed"
 
@@ -145,7 +146,7 @@ def write(pred, found):
             if ref == 6 and layers == 4 and dt == 0.25:
                 path = os.path.join(OUT, name, "sheet.csv")
                 if os.path.exists(path):
-                    cols = sorted(({k: float(v) for k, v in c.items()} for c in csv.DictReader(open(path))),
+                    cols = sorted(({k: float(v) for k, v in c.items() if k != "zone_name"} for c in csv.DictReader(open(path))),
                                   key=lambda c: c["reference_radius"])
                     s_arc, prev, pts = 0.0, None, []
                     for c in cols:

@@ -15,17 +15,6 @@
 
 namespace
 {
-  /// An exception's message on one line.
-  std::string message(const std::exception &e)
-  {
-    std::ostringstream s;
-    if (const auto *d = dynamic_cast<const dealii::ExceptionBase *>(&e))
-      d->print_info(s);
-    else
-      s << e.what();
-    return formsolve::app::one_line(s.str());
-  }
-
   /// Errors are handled here, while the simulation objects still exist:
   /// some of their destructors are collective (MUMPS), and a rank whose
   /// error the others do not share must not wait in them.
@@ -44,7 +33,7 @@ namespace
       }
     catch (const std::exception &e)
       {
-        return formsolve::app::error_exit(message(e));
+        return formsolve::app::error_exit(formsolve::app::exception_text(e));
       }
     return 0;
   }
@@ -56,13 +45,33 @@ int main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   formsolve::app::prepare_error_exit();
+  using formsolve::parameters::CommandLine;
+  // A command line it cannot use: the error on one line, then the usage
+  // with its lines (every rank parses the same arguments).
+  const auto usage_error = [root](const std::string &what) {
+    const int rc = formsolve::app::error_exit(what);
+    if (root)
+      std::cerr << CommandLine::usage();
+    return rc;
+  };
+  CommandLine cl;
   try
     {
-      const auto cl = formsolve::parameters::CommandLine::parse(argc, argv);
+      cl = CommandLine::parse(argc, argv);
+    }
+  catch (const std::exception &e)
+    {
+      return usage_error(formsolve::app::exception_text(e));
+    }
+  if (!cl.help && !cl.print_parameters && !cl.parameter_manual &&
+      cl.input_file.empty())
+    return usage_error("no input file given");
+  try
+    {
       if (cl.help)
         {
           if (root)
-            std::cout << formsolve::parameters::CommandLine::usage();
+            std::cout << CommandLine::usage();
           return 0;
         }
       ParameterHandler prm;
@@ -79,9 +88,6 @@ int main(int argc, char **argv)
             }
           return 0;
         }
-      AssertThrow(!cl.input_file.empty(),
-                  ExcMessage("no input file given\n" +
-                             formsolve::parameters::CommandLine::usage()));
       formsolve::parameters::read_input(prm, cl);
       formsolve::parameters::Run parameters;
       parameters.parse(prm);
@@ -108,6 +114,6 @@ int main(int argc, char **argv)
     }
   catch (const std::exception &e)
     {
-      return formsolve::app::error_exit(message(e));
+      return formsolve::app::error_exit(formsolve::app::exception_text(e));
     }
 }

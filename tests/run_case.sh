@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # run_case.sh FORMSOLVE PRM RANKS OUTDIR PYTHON CHECK [ARGS...]
 # Runs one case into OUTDIR (on RANKS MPI ranks), then the check script. The
-# run report is left out (install_run.sh tests it).
+# run report is left out unless CASE_REPORT=true.
 # CASE_OUT_OF_CORE=1: MUMPS's factors go to the new, empty directory
 # OUTDIR.factors (Linear solver/Out-of-core directory).
 set -euo pipefail
@@ -11,7 +11,7 @@ rm -rf "$out"
 mkdir -p "$(dirname "$out")"
 cd "$(dirname "$prm")"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-report=false
+report=${CASE_REPORT:-false}
 extra=()
 if [ "${CASE_OUT_OF_CORE:-0}" = 1 ]; then
   rm -rf "$out.factors"

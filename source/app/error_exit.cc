@@ -94,6 +94,16 @@ namespace formsolve
       return line;
     }
 
+    std::string exception_text(const std::exception &e)
+    {
+      std::ostringstream s;
+      if (const auto *d = dynamic_cast<const dealii::ExceptionBase *>(&e))
+        d->print_info(s);
+      else
+        s << e.what();
+      return one_line(s.str());
+    }
+
     int error_exit(const std::string &message, const double wait_seconds)
     {
       int rank = 0, size = 1;

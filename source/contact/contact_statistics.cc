@@ -22,6 +22,7 @@ namespace formsolve
       ContactStatistics<dim> s;
       s.tool_force.resize(tools.size());
       s.tool_wall_force.assign(tools.size(), 0.);
+      s.tool_wall_area.assign(tools.size(), 0.);
       s.force_travel = tools.punch_travel();
       s.tool_max_penetration.assign(tools.size(), 0.);
       double sum_penetration = 0;
@@ -41,7 +42,10 @@ namespace formsolve
                                    false);
           s.tool_force[pair.tool] -= f.force;
           if (std::abs(pair.normal[dim - 1]) < 0.1)
-            s.tool_wall_force[pair.tool] += std::abs(f.force * pair.normal);
+            {
+              s.tool_wall_force[pair.tool] += std::abs(f.force * pair.normal);
+              s.tool_wall_area[pair.tool] += pair.area;
+            }
           ++s.n_active;
           const double p = std::max(0., -pair.predicted_gap);
           s.tool_max_penetration[pair.tool] =
@@ -56,6 +60,7 @@ namespace formsolve
           s.tool_force[t] = Utilities::MPI::sum(s.tool_force[t], comm);
           s.tool_wall_force[t] =
             Utilities::MPI::sum(s.tool_wall_force[t], comm);
+          s.tool_wall_area[t] = Utilities::MPI::sum(s.tool_wall_area[t], comm);
           s.tool_max_penetration[t] =
             Utilities::MPI::max(s.tool_max_penetration[t], comm);
           s.max_penetration =

@@ -42,7 +42,9 @@ namespace formsolve
       DamageIncrement d;
       if (d_strain <= 0 || equivalent <= 0)
         return d;
-      d.oyane                     = (mean / equivalent + a) * d_strain / b;
+      // Oyane's integral needs its constants (not given: NaN, left at 0).
+      if (std::isfinite(a) && std::isfinite(b))
+        d.oyane = (mean / equivalent + a) * d_strain / b;
       SymmetricTensor<2, 3> sigma = s;
       for (unsigned int i = 0; i < 3; ++i)
         sigma[i][i] += mean;

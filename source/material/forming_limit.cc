@@ -14,22 +14,37 @@ namespace formsolve
         {
           case SafetyZone::safe:
             return "safe";
+          case SafetyZone::insufficient_stretch:
+            return "insufficient stretch";
           case SafetyZone::wrinkling:
             return "wrinkling tendency";
-          case SafetyZone::marginal:
-            return "marginal";
-          case SafetyZone::necking:
-            return "necking";
+          case SafetyZone::compression:
+            return "compression";
+          case SafetyZone::severe_thinning:
+            return "severe thinning";
+          case SafetyZone::risk_of_crack:
+            return "risk of crack";
+          case SafetyZone::crack:
+            return "crack";
           case SafetyZone::fracture:
             return "fracture";
         }
       return "";
     }
 
+    std::string zone_key(const SafetyZone z)
+    {
+      std::string k = zone_name(z);
+      std::replace(k.begin(), k.end(), ' ', '_');
+      return k;
+    }
+
     FormingLimit::FormingLimit(const parameters::Material &p,
                                const double                thickness)
         : table(p.forming_limit_table)
         , margin(p.safety_margin)
+        , thinning(p.severe_thinning)
+        , stretch(p.insufficient_stretch)
     {
       if (!table.empty())
         {
@@ -46,8 +61,9 @@ namespace formsolve
       if (n != p.hardening_exponent)
         s << " (the hardening exponent " << p.hardening_exponent
           << " capped at 0.21, the rule's range)";
-      s << ", t0 = " << thickness << " mm: FLC0 = " << 100 * flc0_engineering
-        << " % (engineering)";
+      s << ", t0 = " << thickness
+        << " mm: FLC0 = " << std::log1p(flc0_engineering) << " (true strain; "
+        << 100 * flc0_engineering << " % engineering)";
       origin = s.str();
     }
 
@@ -85,11 +101,17 @@ namespace formsolve
         return SafetyZone::fracture;
       const double limit = major(minor);
       if (major_strain >= limit)
-        return SafetyZone::necking;
+        return SafetyZone::crack;
       if (major_strain >= (1 - margin) * limit)
-        return SafetyZone::marginal;
-      if (minor < 0 && major_strain < -minor)
+        return SafetyZone::risk_of_crack;
+      if (1 - std::exp(-(major_strain + minor)) > thinning)
+        return SafetyZone::severe_thinning;
+      if (major_strain < 0)
+        return SafetyZone::compression;
+      if (major_strain + minor < 0)
         return SafetyZone::wrinkling;
+      if (major_strain < stretch)
+        return SafetyZone::insufficient_stretch;
       return SafetyZone::safe;
     }
   } // namespace material

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace formsolve
@@ -81,8 +82,7 @@ namespace formsolve
             }
           else if (a.size() > 1 && a[0] == '-')
             {
-              AssertThrow(false,
-                          ExcMessage("unknown option " + a + "\n" + usage()));
+              AssertThrow(false, ExcMessage("unknown option " + a));
             }
           else
             {
@@ -97,11 +97,43 @@ namespace formsolve
 
     namespace
     {
+      /// @p line with its value made absolute against @p folder if it sets
+      /// one of the entries named @p paths to a relative path.
+      std::string resolve_path(const std::string           &line,
+                               const std::set<std::string> &paths,
+                               const std::filesystem::path &folder)
+      {
+        const auto first = line.find_first_not_of(" \t");
+        const auto equal = line.find('=');
+        if (first == std::string::npos || equal == std::string::npos ||
+            (line.compare(first, 4, "set ") != 0 &&
+             line.compare(first, 4, "SET ") != 0))
+          return line;
+        auto trim = [](std::string t) {
+          t.erase(0, t.find_first_not_of(" \t"));
+          t.erase(t.find_last_not_of(" \t\r") + 1);
+          return t;
+        };
+        const std::string name =
+          trim(line.substr(first + 4, equal - first - 4));
+        std::string value = line.substr(equal + 1), comment;
+        if (const auto hash = value.find('#'); hash != std::string::npos)
+          comment = value.substr(hash), value = value.substr(0, hash);
+        value = trim(value);
+        if (!paths.count(name) || value.empty() ||
+            std::filesystem::path(value).is_absolute())
+          return line;
+        const auto full = (folder / value).lexically_normal();
+        return line.substr(0, equal + 1) + " " + full.string() +
+               (comment.empty() ? "" : " " + comment);
+      }
+
       /// The lines of @p file with its 'include' lines replaced by the
       /// included files' lines (resolved against the including file), each
-      /// with its origin.
+      /// with its origin; the entries named @p paths resolved alike.
       void expand_includes(const std::filesystem::path &file,
                            const unsigned int           depth,
+                           const std::set<std::string> &paths,
                            std::vector<SourceLine>     &lines)
       {
         std::ifstream in(file);
@@ -126,11 +158,27 @@ namespace formsolve
                 std::filesystem::path inc(name);
                 if (inc.is_relative())
                   inc = file.parent_path() / inc;
-                expand_includes(inc, depth + 1, lines);
+                expand_includes(inc, depth + 1, paths, lines);
               }
             else
-              lines.push_back({file.filename().string(), number, line});
+              lines.push_back({file.filename().string(),
+                               number,
+                               resolve_path(line, paths, file.parent_path())});
           }
+      }
+    } // namespace
+
+    namespace
+    {
+      /// The names of the entries that take an input file.
+      void input_file_entries(const DeclaredSection &s,
+                              std::set<std::string> &names)
+      {
+        for (const auto &[name, entry] : s.entries)
+          if (entry.pattern.find("FileName") != std::string::npos)
+            names.insert(name);
+        for (const auto &[name, section] : s.sections)
+          input_file_entries(section, names);
       }
     } // namespace
 
@@ -143,10 +191,16 @@ namespace formsolve
       }
       // 'include' lines are resolved relative to the file that contains
       // them, at any depth (deal.II resolves them against the working
-      // directory): expand them here. Other paths (mesh, output) stay
-      // relative to the working directory.
+      // directory): expand them here, and the input files an entry names
+      // (pattern FileName) alike. The output directory and --set values
+      // stay relative to the working directory.
+      std::set<std::string> paths;
+      input_file_entries(declared(prm), paths);
       std::vector<SourceLine> lines;
-      expand_includes(std::filesystem::absolute(cl.input_file), 0, lines);
+      expand_includes(std::filesystem::absolute(cl.input_file),
+                      0,
+                      paths,
+                      lines);
       std::string text;
       for (const auto &l : lines)
         text += l.text + '\n';

@@ -53,6 +53,19 @@ namespace formsolve
           p = p.substr(1, p.size() - 2);
         while (!p.empty() && p.back() == ' ')
           p.pop_back();
+        if (p.rfind("FileName", 0) == 0)
+          return "a file path (relative to the .prm file that names it)";
+        if (p == "Anything")
+          return "text, as the meaning says";
+        const std::string multiple = "MultipleSelection ";
+        if (p.rfind(multiple, 0) == 0)
+          {
+            std::string        out;
+            std::istringstream in(p.substr(multiple.size()));
+            for (std::string name; std::getline(in, name, '|');)
+              out += (out.empty() ? "`" : ", `") + name + "`";
+            return "a comma-separated list of " + out;
+          }
         const std::string selection = "Selection ";
         if (p.rfind(selection, 0) == 0)
           {

@@ -56,12 +56,12 @@ namespace formsolve
       prm.declare_entry(
         "Mesh file",
         "",
-        Anything(),
+        FileName(FileName::input),
         "For 'gmsh': a 2-D quadrilateral planform mesh (.msh) or a gmsh "
         "geometry (.geo, meshed on reading by gmsh into quadrilaterals) of "
         "the modelled part (quarter: x >= 0, y >= 0; half: x >= 0); it is "
-        "extruded through the thickness. Relative paths are taken from the "
-        "working directory.");
+        "extruded through the thickness. A relative path is taken from the "
+        ".prm file that names it (from the working directory with --set).");
       prm.leave_subsection();
     }
 

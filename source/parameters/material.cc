@@ -2,7 +2,9 @@
 #include <formsolve/parameters/material.h>
 #include <formsolve/parameters/require.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 namespace formsolve
@@ -32,6 +34,22 @@ namespace formsolve
 
     namespace
     {
+      /// A number, or NaN for an empty entry; throws naming @p entry.
+      double optional_number(const std::string &text, const std::string &entry)
+      {
+        if (text.find_first_not_of(" \t") == std::string::npos)
+          return std::numeric_limits<double>::quiet_NaN();
+        char        *end = nullptr;
+        const double x   = std::strtod(text.c_str(), &end);
+        require(end != text.c_str() &&
+                  std::string(end).find_first_not_of(" \t") ==
+                    std::string::npos &&
+                  std::isfinite(x),
+                entry,
+                "'" + text + "' is not a number (leave it empty if not given)");
+        return x;
+      }
+
       /// "minor:major, ..." -> pairs; throws naming the entry.
       std::vector<std::pair<double, double>> parse_table(const std::string &t)
       {
@@ -76,15 +94,18 @@ namespace formsolve
       {
         prm.declare_entry(
           "Oyane a",
-          "0.020",
-          Double(),
+          "",
+          Anything(),
           "a in Oyane's ductile-fracture integral I = (1/b) int (sigma_m / "
-          "sigma_bar + a) d eps_bar (-); fracture where I reaches 1. Default: "
-          "material B of the reference scene.");
+          "sigma_bar + a) d eps_bar (-); fracture where I reaches 1. A "
+          "number, from this sheet's fracture strains; empty: not given "
+          "(the integral is then not computed). Needed by Fracture "
+          "criterion = oyane.");
         prm.declare_entry("Oyane b",
-                          "0.217",
-                          Double(),
-                          "b in Oyane's integral (-), > 0.");
+                          "",
+                          Anything(),
+                          "b in Oyane's integral (-), > 0; empty: not given. "
+                          "Needed by Fracture criterion = oyane.");
         prm.declare_entry(
           "Cockcroft-Latham critical value",
           "0",
@@ -94,10 +115,13 @@ namespace formsolve
           "written to the VTU files, so that C_crit can be calibrated).");
         prm.declare_entry(
           "Fracture criterion",
-          "oyane",
+          "none",
           Selection(fracture_names.pattern()),
           "The criterion that decides fracture: the punch travel at which it "
-          "first reaches 1 anywhere is the critical stroke.");
+          "first reaches 1 anywhere is the critical stroke. oyane needs Oyane "
+          "a and b, cockcroft-latham its critical value, both of this sheet; "
+          "none: no ductile-fracture criterion (the forming limit curve and "
+          "the neck still mark a split, Split/Measures).");
         prm.declare_entry(
           "Fracture measure",
           "through-thickness average",
@@ -132,8 +156,23 @@ namespace formsolve
           "Safety margin",
           "0.1",
           Double(0, 1),
-          "Forming limit diagram: a point is marginal when its major strain "
-          "exceeds (1 - this) times the limit at its minor strain (-).");
+          "Forming limit diagram: a point is at risk of crack when its major "
+          "strain exceeds (1 - this) times the limit at its minor strain "
+          "(-).");
+        prm.declare_entry(
+          "Severe thinning",
+          "0.3",
+          Double(0, 1),
+          "Forming limit diagram: a point below the safety margin is in the "
+          "severe-thinning zone when its thinning 1 - exp(-(major + minor)) "
+          "exceeds this fraction of t0 (-).");
+        prm.declare_entry(
+          "Insufficient stretch",
+          "0.02",
+          Double(0, 1),
+          "Forming limit diagram: a stretched point (major + minor >= 0) "
+          "with a major true strain below this is insufficiently stretched "
+          "(-).");
       }
     } // namespace
 
@@ -251,14 +290,16 @@ namespace formsolve
       rigid_zone            = rigid_zone_names.parse(prm.get("Rigid zone"));
       volumetric_penalty    = prm.get_double("Volumetric penalty");
       anisotropy.parse(prm);
-      oyane_a          = prm.get_double("Oyane a");
-      oyane_b          = prm.get_double("Oyane b");
+      oyane_a = optional_number(prm.get("Oyane a"), "Material/Oyane a");
+      oyane_b = optional_number(prm.get("Oyane b"), "Material/Oyane b");
       cockcroft_latham = prm.get_double("Cockcroft-Latham critical value");
       fracture         = fracture_names.parse(prm.get("Fracture criterion"));
       fracture_measure = measure_names.parse(prm.get("Fracture measure"));
       mean_stress = mean_stress_names.parse(prm.get("Fracture mean stress"));
-      forming_limit_table = parse_table(prm.get("Forming limit table"));
-      safety_margin       = prm.get_double("Safety margin");
+      forming_limit_table  = parse_table(prm.get("Forming limit table"));
+      safety_margin        = prm.get_double("Safety margin");
+      severe_thinning      = prm.get_double("Severe thinning");
+      insufficient_stretch = prm.get_double("Insufficient stretch");
       prm.leave_subsection();
     }
 
@@ -293,8 +334,14 @@ namespace formsolve
                        "1/s");
       require_positive(volumetric_penalty, "Material/Volumetric penalty", "");
       anisotropy.validate();
-      require_positive(oyane_b, "Material/Oyane b", "");
-      require(std::isfinite(oyane_a), "Material/Oyane a", "must be finite");
+      require(std::isnan(oyane_b) || oyane_b > 0,
+              "Material/Oyane b",
+              "must be positive, got " + str(oyane_b));
+      require(fracture != FractureCriterion::oyane || oyane_given(),
+              std::isfinite(oyane_a) ? "Material/Oyane b" : "Material/Oyane a",
+              "Fracture criterion = oyane needs Oyane's constants a and b of "
+              "this sheet (from its fracture strains, doc/user-guide.md "
+              "section 3.3); give both, or set Fracture criterion = none");
       require(fracture != FractureCriterion::cockcroft_latham ||
                 cockcroft_latham > 0,
               "Material/Cockcroft-Latham critical value",

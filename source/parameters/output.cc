@@ -37,13 +37,6 @@ namespace formsolve
         "the section revolved about the z axis as a 3-D mesh "
         "(revolved_<step>.pvtu, revolved.pvd), for pictures of the part.");
       prm.declare_entry(
-        "Stop at fracture",
-        "false",
-        Bool(),
-        "End the run when the deciding fracture criterion (Material/Fracture "
-        "criterion) first reaches 1; the critical stroke is reported "
-        "either way.");
-      prm.declare_entry(
         "Report",
         "true",
         Bool(),
@@ -57,8 +50,15 @@ namespace formsolve
         Integer(0),
         "Write a checkpoint every this many steps (steps) into "
         "<Output directory>/checkpoint, and always when the run ends or "
-        "stops; 'formsolve case.prm --resume' continues from it. 0: only "
-        "at the end.");
+        "stops; 'formsolve case.prm --resume' continues from it. 0: by "
+        "Checkpoint wall time only.");
+      prm.declare_entry(
+        "Checkpoint wall time",
+        "10",
+        Double(0),
+        "Also write a checkpoint once this much wall time (minutes) has "
+        "passed since the last one, so that a killed long run can always be "
+        "resumed; 0: off.");
       prm.declare_entry(
         "Profile travels",
         "",
@@ -82,9 +82,9 @@ namespace formsolve
       wall_time_in_history = prm.get_bool("Wall time in history");
       revolved_copy        = prm.get_bool("Revolved copy");
       revolved_angle       = prm.get_double("Revolved angle");
-      stop_at_fracture     = prm.get_bool("Stop at fracture");
       report               = prm.get_bool("Report");
       checkpoint_interval  = prm.get_integer("Checkpoint interval");
+      checkpoint_minutes   = prm.get_double("Checkpoint wall time");
       profile_travels.clear();
       for (const auto &t :
            dealii::Utilities::split_string_list(prm.get("Profile travels")))

@@ -74,7 +74,29 @@ namespace formsolve
               "/Diameter = ",
               t->diameter,
               " mm is smaller than 1 mm; lengths are in mm, not m");
+      if (g.blank_shape == BlankShape::round && g.blank_diameter < 1)
+        say("Geometry/Blank diameter = ",
+            g.blank_diameter,
+            " mm is smaller than 1 mm; lengths are in mm, not m");
       const double stress = run.material.stress_scale();
+      if (stress < 50)
+        say(run.material.flow_curve == FlowCurve::voce
+              ? "Material/Voce saturation stress = "
+              : "Material/Strength coefficient = ",
+            stress,
+            " MPa is below 50 MPa, softer than any sheet metal at room "
+            "temperature; stresses are in MPa, not GPa");
+      if (run.tools.punch_speed < 0.01)
+        say("Tools/Punch/Speed = ",
+            run.tools.punch_speed,
+            " mm/s is below 0.01 mm/s; speeds are in mm/s, not m/s");
+      if (run.material.flow_curve == FlowCurve::voce &&
+          run.material.forming_limit_table.empty())
+        say("Material/Forming limit table is empty: the forming limit is "
+            "Keeler-Brazier's from Material/Hardening exponent = ",
+            run.material.hardening_exponent,
+            ", which the Voce curve does not set; give the sheet's FLC or "
+            "its n-value");
       if (stress > 1e4)
         say(run.material.flow_curve == FlowCurve::voce
               ? "Material/Voce saturation stress = "

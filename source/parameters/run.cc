@@ -26,6 +26,7 @@ namespace formsolve
       TimeStepping::declare(prm);
       NonlinearSolver::declare(prm);
       LinearSolver::declare(prm);
+      Split::declare(prm);
       Output::declare(prm);
     }
 
@@ -40,10 +41,24 @@ namespace formsolve
       time.parse(prm);
       nonlinear.parse(prm);
       linear.parse(prm);
+      split.parse(prm);
       output.parse(prm);
       if (tools.holder_force_by_siebel)
         {
-          const auto s = siebel(*this);
+          const auto  s    = siebel(*this);
+          const auto &hold = tools.blank_holder;
+          require(s.applies || geometry.blank_shape != BlankShape::round ||
+                    hold.shape != ToolShape::round ||
+                    geometry.blank_diameter > hold.diameter,
+                  "Geometry/Blank diameter",
+                  "(" + str(geometry.blank_diameter) +
+                    " mm) is not larger than the blank holder's opening "
+                    "(Tools/Blank holder/Diameter = " +
+                    str(hold.diameter) +
+                    " mm): there is no flange for the holder"
+                    " (Force = siebel) to press" +
+                    (geometry.blank_diameter < 1 ? "; lengths are in mm, not m"
+                                                 : ""));
           require(s.applies,
                   "Tools/Blank holder/Force",
                   "siebel needs a round blank larger than a round holder "
@@ -171,8 +186,13 @@ namespace formsolve
             run.geometry.blank_shape == BlankShape::round)
           require(run.geometry.blank_diameter > tools.die.diameter,
                   "Geometry/Blank diameter",
-                  "must exceed Tools/Die/Diameter, or the blank falls "
-                  "through the die");
+                  "(" + str(run.geometry.blank_diameter) +
+                    " mm) must exceed Tools/Die/Diameter (" +
+                    str(tools.die.diameter) +
+                    " mm), or the blank falls through the die" +
+                    (run.geometry.blank_diameter < 1
+                       ? "; lengths are in mm, not m"
+                       : ""));
         const double t0         = run.geometry.thickness;
         const auto   punch_half = half_sizes(tools.punch),
                    die_half     = half_sizes(tools.die),
@@ -242,6 +262,7 @@ namespace formsolve
       time.validate();
       nonlinear.validate();
       linear.validate();
+      split.validate();
       output.validate();
 
       check_tool_shapes(*this);

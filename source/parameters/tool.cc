@@ -97,9 +97,10 @@ namespace formsolve
       prm.declare_entry(
         "Mesh file",
         d.mesh_file,
-        Anything(),
-        "Shape = mesh: the tool's surface in mm, relative to the working "
-        "directory: STL (ASCII or binary) or a gmsh mesh (.msh, its "
+        FileName(FileName::input),
+        "Shape = mesh: the tool's surface in mm (a relative path is taken "
+        "from the .prm file that names it, from the working directory with "
+        "--set): STL (ASCII or binary) or a gmsh mesh (.msh, its "
         "triangles), or geometry gmsh meshes at 'Facet size' (.geo, STEP "
         ".step/.stp, IGES .iges/.igs, .brep). A closed surface is the "
         "tool's solid; an open one is its working face, its side the one "

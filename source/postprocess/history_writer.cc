@@ -28,11 +28,15 @@ namespace formsolve
                         : std::vector<std::string>{"_x", "_diagonal", "_y"};
       }
 
-      const std::vector<std::string> zone_columns = {"columns_safe",
-                                                     "columns_wrinkling",
-                                                     "columns_marginal",
-                                                     "columns_necking",
-                                                     "columns_fracture"};
+      /// columns_<zone> of the forming limit diagram's zones.
+      std::vector<std::string> zone_columns()
+      {
+        std::vector<std::string> c;
+        for (unsigned int z = 0; z < material::n_safety_zones; ++z)
+          c.push_back("columns_" +
+                      material::zone_key(static_cast<material::SafetyZone>(z)));
+        return c;
+      }
 
       /// history.csv: the process as the forming engineer reads it.
       template <int dim>
@@ -45,7 +49,7 @@ namespace formsolve
                                       "force_travel"};
         for (unsigned int t = 0; t < tools.size(); ++t)
           c.push_back("force_" + tools.key(t));
-        c.push_back("ironing_force");
+        c.insert(c.end(), {"ironing_force", "ironing_pressure"});
         if (tools.holder_index() != tools::ToolSet<dim>::none)
           c.insert(c.end(), {"holder_displacement", "holder_engaged"});
         // Additional tools: where each is along its direction, and the force
@@ -80,7 +84,7 @@ namespace formsolve
         c.push_back("max_cockcroft_latham_through_thickness");
         for (const auto &x : where)
           c.push_back("max_cockcroft_latham_through_thickness_" + x);
-        for (const auto &z : zone_columns)
+        for (const auto &z : zone_columns())
           c.push_back(z);
         return c;
       }
@@ -172,6 +176,10 @@ namespace formsolve
                 sym * contact::ironing_force(stats,
                                              tools.punch_index(),
                                              tools.die_index()));
+      table.set("ironing_pressure",
+                contact::ironing_pressure(stats,
+                                          tools.punch_index(),
+                                          tools.die_index()));
       if (tools.holder_index() != tools::ToolSet<dim>::none)
         {
           table.set("holder_displacement",
@@ -272,8 +280,9 @@ namespace formsolve
                 forming.through_thickness.oyane.value);
       table.set("max_cockcroft_latham_through_thickness",
                 forming.through_thickness.cockcroft_latham.value);
-      for (unsigned int z = 0; z < zone_columns.size(); ++z)
-        table.set(zone_columns[z], sheet.zone_count[z]);
+      const auto zones = zone_columns();
+      for (unsigned int z = 0; z < zones.size(); ++z)
+        table.set(zones[z], sheet.zone_count[z]);
     }
 
 #define INSTANTIATE(dim) template class HistoryWriter<dim>;

@@ -11,22 +11,35 @@ namespace formsolve
         : window(window)
     {}
 
-    void Progress::record(const double wall, const double travel)
+    void
+    Progress::record(const double wall, const double travel, const double to_go)
     {
-      points.emplace_back(wall, travel);
+      points.push_back({wall, travel, to_go});
       if (points.size() > window + 1)
         points.pop_front();
     }
 
-    double Progress::time_left(const double stroke) const
+    double Progress::end_travel(const double beyond) const
+    {
+      const double inf = std::numeric_limits<double>::infinity();
+      if (points.size() < 2 || !std::isfinite(points.back().to_go))
+        return inf;
+      const auto  &a = points.front(), &b = points.back();
+      const double rate = (a.to_go - b.to_go) / (b.travel - a.travel);
+      if (!(rate > 0))
+        return inf;
+      return b.travel + std::max(0., b.to_go) / rate + beyond;
+    }
+
+    double Progress::time_left(const double end) const
     {
       if (points.size() < 2)
         return -1;
-      const double dw = points.back().first - points.front().first;
-      const double ds = points.back().second - points.front().second;
-      if (ds <= 0)
+      const auto  &a = points.front(), &b = points.back();
+      const double ds = b.travel - a.travel;
+      if (ds <= 0 || !std::isfinite(end))
         return -1;
-      return dw / ds * std::max(0., stroke - points.back().second);
+      return (b.wall - a.wall) / ds * std::max(0., end - b.travel);
     }
 
     std::string Progress::duration(const double s)

@@ -23,6 +23,7 @@ namespace formsolve
       struct Column
       {
         bool                   top = false, bottom = false, rim = false;
+        bool                   top_touching = false, bottom_touching = false;
         dealii::Point<dim>     x_top, x_bottom, mid;
         dealii::Tensor<1, dim> normal;
         double                 major = 0, minor = 0, damage = 0;
@@ -52,10 +53,11 @@ namespace formsolve
             s.mid       = c.x_bottom + 0.5 * across;
             s.thickness = across.norm();
           }
-        s.damage = c.damage;
-        s.rim    = c.rim;
-        s.top    = std::max(c.x_top[dim - 1], c.x_bottom[dim - 1]);
-        s.bottom = std::min(c.x_top[dim - 1], c.x_bottom[dim - 1]);
+        s.damage   = c.damage;
+        s.rim      = c.rim;
+        s.squeezed = c.top_touching && c.bottom_touching;
+        s.top      = std::max(c.x_top[dim - 1], c.x_bottom[dim - 1]);
+        s.bottom   = std::min(c.x_top[dim - 1], c.x_bottom[dim - 1]);
         return s;
       }
     } // namespace
@@ -78,15 +80,16 @@ namespace formsolve
       for (const auto &v : all_nodes)
         for (std::size_t i = 0; i < v.size();)
           {
-            auto        &c    = columns[read_key(v, i)];
-            const double side = v[i++];
+            auto        &c     = columns[read_key(v, i)];
+            const double side  = v[i++];
+            const bool   touch = v[i++] != 0.;
             Point<dim>   p;
             for (unsigned int d = 0; d < dim; ++d)
               p[d] = v[i++];
             if (side == 0.)
-              c.bottom = true, c.x_bottom = p;
+              c.bottom = true, c.x_bottom = p, c.bottom_touching = touch;
             else if (side == 1.)
-              c.top = true, c.x_top = p;
+              c.top = true, c.x_top = p, c.top_touching = touch;
             else
               c.rim = true;
           }
@@ -223,9 +226,19 @@ namespace formsolve
           if (c.rim)
             rim_top = std::max(rim_top, c.top);
           // Stretched beyond the curve's own scale only: a column with no
-          // positive major strain uses none of the limit.
-          if (c.major > 0 && flc.major(c.minor) > 0)
-            usage = std::max(usage, c.major / flc.major(c.minor));
+          // positive major strain uses none of the limit. Ties go to the
+          // first in the canonical order, so that no partition decides.
+          const double u = c.major > 0 && flc.major(c.minor) > 0
+                             ? c.major / flc.major(c.minor)
+                             : 0.;
+          if (u > usage || (u > 0 && model::ties(u, usage) &&
+                            model::precedes(c.mid, s.flc_location)))
+            {
+              usage          = std::max(u, usage);
+              s.flc_radius   = c.reference_radius;
+              s.flc_angle    = c.reference_angle;
+              s.flc_location = c.mid;
+            }
         }
       s.max_thickening = 100. * (max_thickness / t0 - 1.);
       s.flc_margin     = 100. * (1. - usage);

@@ -40,6 +40,15 @@ namespace formsolve
     }
 
     template <int dim>
+    double SheetMeasures<dim>::distance(const Key &a, const Key &b)
+    {
+      double d2 = 0;
+      for (unsigned int d = 0; d + 1 < dim; ++d)
+        d2 += std::pow(double(a[d] - b[d]) * quantum, 2);
+      return std::sqrt(d2);
+    }
+
+    template <int dim>
     void SheetMeasures<dim>::measure(const state::State<dim>        &state,
                                      const material::DamageCriteria &damage)
     {
@@ -62,9 +71,13 @@ namespace formsolve
                                        s.max_thickening,
                                        s.flc_margin,
                                        s.cup_height,
-                                       s.blank_radius};
+                                       s.blank_radius,
+                                       s.flc_radius,
+                                       s.flc_angle};
           for (unsigned int d = 0; d < dim; ++d)
             packed.push_back(s.min_thickness_location[d]);
+          for (unsigned int d = 0; d < dim; ++d)
+            packed.push_back(s.flc_location[d]);
           for (const auto n : s.zone_count)
             packed.push_back(n);
           packed.insert(packed.end(), s.rim_radius.begin(), s.rim_radius.end());
@@ -79,14 +92,46 @@ namespace formsolve
       sum.flc_margin           = packed[i++];
       sum.cup_height           = packed[i++];
       sum.blank_radius         = packed[i++];
+      sum.flc_radius           = packed[i++];
+      sum.flc_angle            = packed[i++];
       for (unsigned int d = 0; d < dim; ++d)
         sum.min_thickness_location[d] = packed[i++];
+      for (unsigned int d = 0; d < dim; ++d)
+        sum.flc_location[d] = packed[i++];
       for (auto &n : sum.zone_count)
         n = static_cast<unsigned int>(packed[i++]);
       const std::size_t directions = (packed.size() - i) / 2;
       sum.rim_radius.assign(packed.begin() + i,
                             packed.begin() + i + directions);
       sum.draw_in.assign(packed.begin() + i + directions, packed.end());
+    }
+
+    template <int dim>
+    std::vector<double>
+    SheetMeasures<dim>::node_records(const state::State<dim> &state) const
+    {
+      // Surface nodes (top, bottom) and rim nodes between them, and
+      // whether a tool presses on each.
+      const double        tol = 1e-6 * t0;
+      std::vector<double> nodes;
+      std::vector<bool>   touching(state.contact_set.nodes.size(), false);
+      for (const auto &pair : state.contact_set.pairs)
+        if (pair.active)
+          touching[pair.node] = true;
+      for (unsigned int n = 0; n < state.contact_set.nodes.size(); ++n)
+        {
+          const auto       &node = state.contact_set.nodes[n];
+          const Point<dim> &X    = node.reference_position;
+          const double      z    = X[dim - 1];
+          const double      side = z < tol ? 0. : z > t0 - tol ? 1. : 2.;
+          for (const auto k : key(X))
+            nodes.push_back(k);
+          nodes.push_back(side);
+          nodes.push_back(touching[n] ? 1. : 0.);
+          for (unsigned int d = 0; d < dim; ++d)
+            nodes.push_back(X[d] + state.displacement_ghost[node.dofs[d]]);
+        }
+      return nodes;
     }
 
     template <int dim>
@@ -97,21 +142,8 @@ namespace formsolve
       constexpr unsigned int nc  = n_corners;
       const double           tol = 1e-6 * t0;
       Records                r;
-      std::vector<double>   &nodes = r.nodes, &cells = r.cells,
-                          &damages = r.damages;
-
-      // Surface nodes (top, bottom) and rim nodes between them.
-      for (const auto &node : state.contact_set.nodes)
-        {
-          const Point<dim> &X    = node.reference_position;
-          const double      z    = X[dim - 1];
-          const double      side = z < tol ? 0. : z > t0 - tol ? 1. : 2.;
-          for (const auto k : key(X))
-            nodes.push_back(k);
-          nodes.push_back(side);
-          for (unsigned int d = 0; d < dim; ++d)
-            nodes.push_back(X[d] + state.displacement_ghost[node.dofs[d]]);
-        }
+      r.nodes                    = node_records(state);
+      std::vector<double> &cells = r.cells, &damages = r.damages;
 
       // Cells: mid-plane strain and normal, and damage per planform cell.
       const double zm = 0.5 * t0;
@@ -262,15 +294,15 @@ namespace formsolve
         return; // not rank 0
       std::ostringstream f;
       f << "reference_radius,reference_angle,r,z,thickness,thinning_percent,"
-           "major_strain,minor_strain,damage,zone,rim\n";
+           "major_strain,minor_strain,damage,zone,zone_name,rim\n";
       f.precision(8);
       for (const auto &c : cols)
         f << c.reference_radius << ',' << c.reference_angle << ','
           << (dim == 2 ? c.mid[0] : std::hypot(c.mid[0], c.mid[1])) << ','
           << c.mid[dim - 1] << ',' << c.thickness << ','
           << 100. * (1. - c.thickness / t0) << ',' << c.major << ',' << c.minor
-          << ',' << c.damage << ',' << static_cast<int>(c.zone) << ',' << c.rim
-          << '\n';
+          << ',' << c.damage << ',' << static_cast<int>(c.zone) << ','
+          << material::zone_name(c.zone) << ',' << c.rim << '\n';
       std::ostringstream g;
       g << "# " << flc.source() << "\nminor_strain,major_strain\n";
       for (int i = -60; i <= 60; ++i)

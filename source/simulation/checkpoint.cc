@@ -9,7 +9,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <vector>
 
 namespace formsolve
 {
@@ -54,6 +56,70 @@ namespace formsolve
               out << word << '\n';
           }
         return out.str();
+      }
+
+      /// "Sub/Sub/Entry" -> value of a parameter listing, the Output
+      /// subsection left out.
+      std::map<std::string, std::string> entries(const std::string &listing)
+      {
+        std::map<std::string, std::string> e;
+        std::istringstream                 in(without_output(listing));
+        std::vector<std::string>           path;
+        for (std::string line; std::getline(in, line);)
+          {
+            if (line.rfind("subsection ", 0) == 0)
+              path.push_back(line.substr(11));
+            else if (line == "end" && !path.empty())
+              path.pop_back();
+            else if (line.rfind("set ", 0) == 0)
+              {
+                const auto eq = line.find('=');
+                if (eq == std::string::npos)
+                  continue;
+                std::string name  = line.substr(4, eq - 4),
+                            value = line.substr(eq + 1);
+                value             = value.substr(0, value.find(" # default:"));
+                auto trim         = [](std::string &t) {
+                  t.erase(0, t.find_first_not_of(" \t"));
+                  t.erase(t.find_last_not_of(" \t") + 1);
+                };
+                trim(name);
+                trim(value);
+                std::string key;
+                for (const auto &p : path)
+                  key += p + "/";
+                e[key + name] = value;
+              }
+          }
+        return e;
+      }
+
+      /// The entries whose values differ, with both values (at most ten).
+      std::string differences(const std::string &saved, const std::string &now)
+      {
+        const auto         a = entries(saved), b = entries(now);
+        std::ostringstream s;
+        unsigned int       n   = 0;
+        auto               say = [&](const std::string &key,
+                       const std::string &was,
+                       const std::string &is) {
+          if (n++ < 10)
+            s << (n > 1 ? "; " : "") << key << " = " << was
+              << " in the checkpoint, " << is << " now";
+        };
+        // Changed values first, then entries only one listing has.
+        for (const auto &[key, value] : a)
+          if (const auto it = b.find(key); it != b.end() && it->second != value)
+            say(key, "'" + value + "'", "'" + it->second + "'");
+        for (const auto &[key, value] : a)
+          if (!b.count(key))
+            say(key, "'" + value + "'", "no such entry");
+        for (const auto &[key, value] : b)
+          if (!a.count(key))
+            say(key, "absent", "'" + value + "'");
+        if (n > 10)
+          s << "; and " << n - 10 << " more";
+        return s.str();
       }
 
       template <int dim>
@@ -193,11 +259,10 @@ namespace formsolve
       saved << p.rdbuf();
       AssertThrow(without_output(saved.str()) == without_output(parameters),
                   ExcMessage("--resume: the checkpoint in " + from +
-                             " was written by another case: its parameters "
-                             "(" +
-                             from +
-                             "/parameters.prm) differ from these "
-                             "outside the Output subsection"));
+                             " was written by another case; its parameters (" +
+                             from + "/parameters.prm) differ from these: " +
+                             differences(saved.str(), parameters) +
+                             " (only Output entries may change on resume)"));
       Metadata      meta;
       std::ifstream m(from + "/meta.txt");
       std::string   line;

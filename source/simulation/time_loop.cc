@@ -4,6 +4,7 @@
 #include <formsolve/app/blas_kernel.h>
 #include <formsolve/app/error_exit.h>
 #include <formsolve/geometry/blank_mesh.h>
+#include <formsolve/material/material_summary.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/postprocess/history_writer.h>
 #include <formsolve/postprocess/progress.h>
@@ -48,6 +49,7 @@ namespace formsolve
                    state.tools,
                    geometry::initial_mesh_level(run.mesh))
         , sheet(run)
+        , split(run.split, run.geometry.thickness)
     {}
 
     template <int dim>
@@ -114,17 +116,27 @@ namespace formsolve
                            : ": no sheet within reach of it")
                 << std::endl;
         }
-      if (prm.time.end_of_run == parameters::EndOfRun::holder_release &&
-          state.holder.released)
-        return "the blank holder was released at punch travel " + travel.str();
-      // Nodes touching the die wall sit at lateral distance 0 within the
-      // penetration: a tolerance of 1 % of t0 counts them as inside.
-      if (prm.time.end_of_run == parameters::EndOfRun::draw_through &&
-          state.max_lateral_distance(tools.die_index()) <=
-            0.01 * prm.geometry.thickness)
-        return "drawn through: the whole blank lies inside the die opening "
-               "at punch travel " +
-               travel.str();
+      to_go = std::numeric_limits<double>::quiet_NaN();
+      if (prm.time.end_of_run == parameters::EndOfRun::holder_release)
+        {
+          if (state.holder.released)
+            return "the blank holder was released at punch travel " +
+                   travel.str();
+          to_go =
+            state.max_lateral_distance(holder) - 0.5 * prm.geometry.thickness;
+        }
+      if (prm.time.end_of_run == parameters::EndOfRun::draw_through)
+        {
+          // Nodes touching the die wall sit at lateral distance 0 within the
+          // penetration: a tolerance of 1 % of t0 counts them as inside.
+          const double flange = state.max_lateral_distance(tools.die_index()) -
+                                0.01 * prm.geometry.thickness;
+          if (flange <= 0)
+            return "drawn through: the whole blank lies inside the die "
+                   "opening at punch travel " +
+                   travel.str();
+          to_go = flange;
+        }
       return "";
     }
 
@@ -159,27 +171,12 @@ namespace formsolve
             << step_solver.strategy_name() << ", forces scaled by "
             << prm.geometry.symmetry_factor() << " to the full part; BLAS "
             << app::blas_kernel() << "\n";
-      if (!material.isotropic())
-        {
-          // One line: what the Hill coefficients imply, and the fracture
-          // constants as used.
-          std::string hill = material.hill().summary();
-          for (std::size_t p = hill.find('\n'); p != std::string::npos;
-               p             = hill.find('\n', p))
-            hill.replace(p, 1, ", ");
-          pcout << "material: " << prm.material.anisotropy.describe() << ": "
-                << hill << "; RD at "
-                << prm.material.anisotropy.rolling_direction
-                << " deg to x; fracture constants converted with k = "
-                << damage.conversion() << ": a = " << damage.a_used()
-                << ", b = " << damage.b_used() << "\n";
-        }
-      if (const auto &m = prm.material;
-          m.flow_curve == parameters::FlowCurve::voce)
-        pcout << "flow curve: Voce, sigma = " << m.voce_saturation << " - "
-              << m.voce_amplitude << " exp(-" << m.voce_rate
-              << " eps) MPa; Keeler-Brazier's forming limit with n = "
-              << m.hardening_exponent << "\n";
+      for (const auto &line :
+           material::material_summary(prm.material,
+                                      material,
+                                      damage,
+                                      prm.geometry.thickness))
+        pcout << line << "\n";
       if (const auto advice = app::blas_advice(); !advice.empty())
         pcout << "note: OpenBLAS runs its generic Prescott kernels on this "
                  "CPU, which makes the factorisations about 2x slower; start "
@@ -243,6 +240,7 @@ namespace formsolve
       step_solver.release_factors();
       summary.wall_time = seconds();
       checkpoint->save(state, loop_metadata(summary));
+      last_checkpoint = seconds();
     }
 
     template <int dim>
@@ -256,6 +254,8 @@ namespace formsolve
       for (const double p : prm.output.profile_travels)
         if (p > tools.punch_travel() + 1e-9)
           max_dt = std::min(max_dt, (p - tools.punch_travel()) / speed);
+      if (const double p = split_stop_travel(); p > tools.punch_travel() + 1e-9)
+        max_dt = std::min(max_dt, (p - tools.punch_travel()) / speed);
       const double newton_start = seconds();
       const auto   report       = step_solver.solve(max_dt);
       summary.newton_wall_time += seconds() - newton_start;
@@ -269,22 +269,6 @@ namespace formsolve
       summary.factor_entries =
         std::max(summary.factor_entries, report.factor_entries);
       summary.cutbacks += report.cutbacks;
-      if (report.converged)
-        return report;
-      // The state is that of the last converged step again.
-      if (prm.output.interval > 0 && last_output_step != int(state.step))
-        write_output();
-      save_checkpoint(summary);
-      std::ostringstream s;
-      s << "step " << state.step + 1 << " (punch travel "
-        << tools.punch_travel() << " mm): " << report.failure
-        << " (|r|/|f| = " << report.residual << ") after " << report.cutbacks
-        << " time-step cut(s), at the minimum time step "
-           "(Time stepping/Minimum time step = "
-        << prm.time.minimum_time_step
-        << " s); results up to the previous step and a checkpoint are in "
-        << prm.output.directory;
-      AssertThrow(false, ExcMessage(s.str()));
       return report;
     }
 
@@ -299,18 +283,21 @@ namespace formsolve
                                               state.tools.die_index());
       if (f <= 0.005 * std::abs(punch_force))
         return;
-      summary.max_ironing_force = std::max(summary.max_ironing_force, f);
+      const double p               = contact::ironing_pressure(s,
+                                                 state.tools.punch_index(),
+                                                 state.tools.die_index());
+      summary.max_ironing_force    = std::max(summary.max_ironing_force, f);
+      summary.max_ironing_pressure = std::max(summary.max_ironing_pressure, p);
       if (summary.ironing_travel >= 0)
         return;
       summary.ironing_travel = s.force_travel;
-      pcout << "note: the wall is ironed, squeezed between punch and die "
-               "with "
-            << f << " N from punch travel " << s.force_travel
-            << " mm (history.csv: ironing_force)" << std::endl;
+      pcout << "note: the wall is ironed, squeezed between punch and die at "
+            << p << " MPa from punch travel " << s.force_travel
+            << " mm (history.csv: ironing_pressure)" << std::endl;
     }
 
     template <int dim>
-    bool TimeLoop<dim>::record_step(const solver::StepReport &report,
+    void TimeLoop<dim>::record_step(const solver::StepReport &report,
                                     RunSummary               &summary)
     {
       const auto stats = step_solver.statistics(report.dt);
@@ -345,128 +332,48 @@ namespace formsolve
         }
       summary.max_penetration =
         std::max(summary.max_penetration, stats.max_penetration);
+      tool_loaded.resize(state.tools.size(), false);
+      for (unsigned int t = 0; t < state.tools.size(); ++t)
+        tool_loaded[t] = tool_loaded[t] || stats.tool_force[t].norm() > 0;
       note_ironing(stats, force, summary);
-      const bool fractured = check_fracture(forming, summary);
-      progress.record(wall, travel);
+      const auto fracture = check_fracture(forming, summary);
+      announce_split(split.observe(sheet, travel, force, fracture, comm));
+      print_step(report, force, stats.max_penetration);
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::print_step(const solver::StepReport &report,
+                                   const double              force,
+                                   const double              penetration)
+    {
+      const double wall = seconds();
+      progress.record(wall, state.tools.punch_travel(), to_go);
+      // The run ends at the stroke, past the split, or when the flange has
+      // left the die: by its recent draw-in, and half the die radius more
+      // for the rim to round it (doc/user-guide.md, section 5.3).
+      const auto  &die = prm.tools.die;
+      const double end =
+        std::min({state.tools.punch_stroke(),
+                  split_stop_travel(),
+                  progress.end_travel(die.shape == parameters::ToolShape::mesh
+                                        ? 0.
+                                        : 0.5 * die.profile_radius)});
+      const auto &sh = sheet.summary();
       pcout << "step " << std::setw(4) << state.step << "  t=" << std::fixed
-            << std::setprecision(3) << state.time << " s  travel=" << travel
+            << std::setprecision(3) << state.time
+            << " s  travel=" << state.tools.punch_travel()
             << " mm  F=" << std::setprecision(2) << force / 1000.
-            << " kN  newton=" << std::setw(2) << report.iterations
+            << " kN  thin=" << std::setprecision(1) << sh.max_thinning
+            << " %  FLC margin=" << sh.flc_margin
+            << " %  newton=" << std::setw(2) << report.iterations
             << (report.cutbacks > 0 ? "  cut=" + std::to_string(report.cutbacks)
                                     : std::string())
             << "  pen=" << std::scientific << std::setprecision(2)
-            << stats.max_penetration
+            << penetration
             << " mm  wall=" << postprocess::Progress::duration(wall)
             << "  left~"
-            << postprocess::Progress::duration(
-                 progress.time_left(state.tools.punch_stroke()))
+            << postprocess::Progress::duration(progress.time_left(end))
             << std::defaultfloat << std::setprecision(6) << std::endl;
-      return fractured;
-    }
-
-    template <int dim>
-    RunSummary TimeLoop<dim>::run(const bool resume)
-    {
-      RunSummary summary;
-      start_time  = std::chrono::steady_clock::now();
-      wall_before = &summary.wall_before;
-      checkpoint  = std::make_unique<Checkpoint<dim>>(prm.output.directory,
-                                                     parameter_listing());
-      writer      = std::make_unique<postprocess::VtuWriter<dim>>(prm.output);
-      tool_writer =
-        std::make_unique<postprocess::ToolWriter<dim>>(prm.output.directory);
-      start(resume, summary);
-
-      progress.record(seconds(), state.tools.punch_travel());
-      summary.end_reason  = "the punch stroke was reached";
-      const double stroke = state.tools.punch_stroke();
-      while (state.tools.punch_travel() < stroke * (1 - 1e-12))
-        {
-          if (prm.refinement.enabled() && state.step > 0 &&
-              state.step % prm.refinement.interval == 0)
-            adapt();
-          if (const auto reason = check_events(); !reason.empty())
-            {
-              summary.end_reason = reason;
-              break;
-            }
-          app::injected_failure(state.step + 1);
-          app::injected_kill("step", state.step + 1);
-          const auto report    = solve_step(summary);
-          const bool fractured = record_step(report, summary);
-
-          const bool last = state.tools.punch_travel() >= stroke * (1 - 1e-12);
-          if (prm.output.interval > 0 &&
-              (state.step % prm.output.interval == 0 || last))
-            write_output();
-          if (prm.output.checkpoint_interval > 0 && !last &&
-              state.step % prm.output.checkpoint_interval == 0)
-            save_checkpoint(summary);
-          if (fractured && prm.output.stop_at_fracture)
-            {
-              std::ostringstream s;
-              s << "fracture predicted at punch travel "
-                << summary.critical_stroke << " mm (Output/Stop at fracture)";
-              summary.end_reason = s.str();
-              break;
-            }
-        }
-      finish(summary);
-      return summary;
-    }
-
-    template <int dim>
-    void TimeLoop<dim>::finish(RunSummary &summary)
-    {
-      if (prm.output.interval > 0 && last_output_step != int(state.step))
-        write_output();
-      save_checkpoint(summary);
-
-      summary.wall_time = seconds();
-      sheet.measure(state, damage);
-      sheet.write_csv(prm.output.directory);
-      if constexpr (dim == 3)
-        if (prm.geometry.blank_shape == parameters::BlankShape::round)
-          {
-            earing = postprocess::earing_profile(
-              sheet.columns(),
-              prm.geometry.model,
-              prm.material.anisotropy.rolling_direction);
-            postprocess::write_earing(earing, prm.output.directory);
-          }
-      write_summary(summary);
-      pcout << "done: " << state.step << " steps, " << summary.newton_iterations
-            << " Newton iterations, " << summary.cutbacks
-            << " time-step cut(s), " << summary.linear_iterations
-            << " linear solves/iterations, "
-            << postprocess::Progress::duration(summary.wall_time) << "; "
-            << summary.end_reason << "; results in " << prm.output.directory
-            << std::endl;
-      if (damage.criterion() != parameters::FractureCriterion::none)
-        {
-          const auto stroke = [](const double s) {
-            return s >= 0 ? std::to_string(s) + " mm" : std::string("none");
-          };
-          pcout << (summary.critical_stroke >= 0
-                      ? "critical stroke (fracture predicted): " +
-                          std::to_string(summary.critical_stroke) + " mm"
-                      : std::string(
-                          "no fracture predicted up to the end of the run"))
-                << " by the "
-                << (prm.material.fracture_measure ==
-                        parameters::FractureMeasure::local
-                      ? "local maximum"
-                      : "through-thickness average")
-                << " (through-thickness average: "
-                << stroke(summary.through_thickness.stroke)
-                << ", local maximum: " << stroke(summary.local.stroke) << ")";
-        }
-      if (damage.criterion() != parameters::FractureCriterion::none)
-        pcout << "; minimum thickness " << sheet.summary().min_thickness
-              << " mm (thinning " << sheet.summary().max_thinning << " %)"
-              << std::endl;
-      timer.print_summary();
-      make_report();
     }
 
 #define INSTANTIATE(dim) template class TimeLoop<dim>;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace formsolve
@@ -51,6 +52,9 @@ namespace formsolve
       // The holder must act on the flange, and the blank must lie on the die.
       const unsigned int holder = state.tools.holder_index(),
                          die    = state.tools.die_index();
+      AssertThrow(die == state.tools.none ||
+                    state.max_lateral_distance(die) > 0,
+                  ExcMessage(die_message()));
       AssertThrow(holder == state.tools.none ||
                     state.max_lateral_distance(holder) > 0,
                   ExcMessage(
@@ -58,11 +62,105 @@ namespace formsolve
                     "lies under the blank holder (its opening is as "
                     "large as the blank or larger); it would not act "
                     "on the flange"));
-      AssertThrow(die == state.tools.none ||
-                    state.max_lateral_distance(die) > 0,
-                  ExcMessage("Tools/Die/Diameter: no part of the blank lies on "
-                             "the die (its opening is as large as the blank or "
-                             "larger)"));
+      scene_warnings.clear();
+      state.update_contact_areas(); // which surface faces which tool
+      check_reach();
+      check_resolution();
+      for (const auto &w : scene_warnings)
+        pcout << "warning: " << w << "\n";
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::check_reach()
+    {
+      // The sheet moves at most as far as the punch; a tool comes nearer by
+      // its own stroke (prescribed; at its speed over the run without one)
+      // and without bound under force control.
+      const auto  &tools  = state.tools;
+      const double stroke = tools.punch_stroke();
+      for (unsigned int t = 0; t < tools.size(); ++t)
+        {
+          const auto  &m = tools.motion(t);
+          const double own =
+            t == tools.punch_index() ? 0.
+            : m.kind == parameters::ToolMotion::prescribed
+              ? (m.stroke > 0 ? m.stroke
+                              : m.speed * stroke / tools.punch_speed())
+            : m.kind == parameters::ToolMotion::force
+              ? std::numeric_limits<double>::infinity()
+              : 0.;
+          const double       reach = stroke + own;
+          const double       d     = state.min_distance(t);
+          std::ostringstream s;
+          s.precision(4);
+          if (d == std::numeric_limits<double>::max())
+            s << "Tools/" << tools[t].name()
+              << ": no part of the sheet's surface faces this tool; it will "
+                 "never touch the sheet (check its position and Shape)";
+          else if (d > reach + tools.allowed_penetration(t))
+            s << "Tools/" << tools[t].name() << ": the tool is " << d
+              << " mm from the sheet, farther than the run brings them "
+                 "together ("
+              << reach << " mm: the punch's Stroke"
+              << (own > 0 ? " and the tool's own" : "")
+              << "); it will never touch the sheet (check its Gap, Mesh "
+                 "offset and the Stroke)";
+          if (!s.str().empty())
+            scene_warnings.push_back(s.str());
+        }
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::check_resolution()
+    {
+      // Smallest in-plane cell size, and as refined at the radii.
+      double h = std::numeric_limits<double>::max();
+      for (const auto &cell : state.tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (unsigned int d = 0; d + 1 < dim; ++d)
+            h = std::min(h, cell->extent_in_direction(d));
+      h                    = Utilities::MPI::min(h, comm);
+      const auto        &r = prm.refinement;
+      const unsigned int levels =
+        r.enabled() ? std::max({r.punch_level, r.die_level, r.holder_level})
+                    : 0;
+      h                         = std::ldexp(h, -int(levels));
+      const double       travel = prm.time.time_step * prm.tools.punch_speed;
+      std::ostringstream s;
+      s.precision(3);
+      if (travel > h)
+        {
+          s << "Time stepping/Time step = " << prm.time.time_step
+            << " s moves the punch " << travel
+            << " mm per step, more than the smallest elements (" << h
+            << " mm in the plane" << (levels > 0 ? " at the tool radii" : "")
+            << "): the sheet wraps a radius over fewer steps than it has "
+               "elements there; a step of at most "
+            << h / prm.tools.punch_speed << " s resolves them";
+          scene_warnings.push_back(s.str());
+        }
+      // Bending over a radius needs layers through the thickness.
+      const bool bends = [&] {
+        for (const auto *t : {&prm.tools.punch, &prm.tools.die})
+          if (t->enabled && t->shape != parameters::ToolShape::flat)
+            return true;
+        return false;
+      }();
+      const unsigned int needed = prm.mesh.degree == 1 ? 4 : 2;
+      const unsigned int layers = prm.mesh.layers << levels;
+      if (bends && layers < needed)
+        {
+          std::ostringstream l;
+          l << "Mesh/Layers through thickness = " << prm.mesh.layers
+            << (levels > 0
+                  ? " (" + std::to_string(layers) + " at the refined radii)"
+                  : std::string())
+            << ": bending over the tool radii needs at least " << needed
+            << " layers of Q" << prm.mesh.degree
+            << " elements; fewer overestimate the bending stiffness and "
+               "miss the thinning there";
+          scene_warnings.push_back(l.str());
+        }
     }
 
     template <int dim>
@@ -101,10 +199,33 @@ namespace formsolve
             << " tool(s)" << std::endl;
     }
 
-#define INSTANTIATE(dim)                                   \
-  template void TimeLoop<dim>::check_initial_scene();      \
-  template void TimeLoop<dim>::prepare_output_directory(); \
-  template void TimeLoop<dim>::validate_scene();
+    template <int dim>
+    std::string TimeLoop<dim>::die_message() const
+    {
+      std::ostringstream s;
+      const auto        &g = prm.geometry;
+      const auto        &d = prm.tools.die;
+      if (g.blank_shape == parameters::BlankShape::round &&
+          d.shape == parameters::ToolShape::round)
+        s << "Geometry/Blank diameter = " << g.blank_diameter
+          << " mm: the blank does not reach the die, whose opening "
+             "(Tools/Die/Diameter) is "
+          << d.diameter << " mm"
+          << (g.blank_diameter < 1 ? "; lengths are in mm, not m" : "");
+      else
+        s << "Tools/Die: no part of the blank lies on the die (its opening "
+             "is as large as the blank or larger; check Geometry and "
+             "Tools/Die)";
+      return s.str();
+    }
+
+#define INSTANTIATE(dim)                                          \
+  template void        TimeLoop<dim>::check_initial_scene();      \
+  template void        TimeLoop<dim>::check_reach();              \
+  template void        TimeLoop<dim>::check_resolution();         \
+  template std::string TimeLoop<dim>::die_message() const;        \
+  template void        TimeLoop<dim>::prepare_output_directory(); \
+  template void        TimeLoop<dim>::validate_scene();
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace simulation

@@ -48,7 +48,12 @@ namespace formsolve
     template <int dim>
     Metadata TimeLoop<dim>::loop_metadata(const RunSummary &s) const
     {
-      return {
+      Metadata    m = split.save();
+      std::string loaded;
+      for (const bool l : tool_loaded)
+        loaded += l ? '1' : '0';
+      m["tools_loaded"] = loaded;
+      m.merge(Metadata{
         {"summary.newton_iterations", std::to_string(s.newton_iterations)},
         {"summary.linear_iterations", std::to_string(s.linear_iterations)},
         {"summary.matrix_assemblies", std::to_string(s.matrix_assemblies)},
@@ -68,6 +73,7 @@ namespace formsolve
         {"summary.max_penetration", exact_text(s.max_penetration)},
         {"summary.ironing_travel", exact_text(s.ironing_travel)},
         {"summary.max_ironing_force", exact_text(s.max_ironing_force)},
+        {"summary.max_ironing_pressure", exact_text(s.max_ironing_pressure)},
         {"summary.critical_stroke", exact_text(s.critical_stroke)},
         {"summary.fracture_location", s.fracture_location},
         {"summary.local.stroke", exact_text(s.local.stroke)},
@@ -85,7 +91,8 @@ namespace formsolve
          std::to_string(refinement_log ? refinement_log->n_rows() : 0)},
         {"pvd.solution", records(writer->solution_records())},
         {"pvd.revolved", records(writer->revolved_pvd_records())},
-        {"pvd.tools", records(tool_writer->pvd_records())}};
+        {"pvd.tools", records(tool_writer->pvd_records())}});
+      return m;
     }
 
     template <int dim>
@@ -114,6 +121,7 @@ namespace formsolve
                                     ? optional("summary.ironing_travel")
                                     : -1.;
       s.max_ironing_force       = optional("summary.max_ironing_force");
+      s.max_ironing_pressure    = optional("summary.max_ironing_pressure");
       s.critical_stroke         = std::stod(m.at("summary.critical_stroke"));
       s.fracture_location       = m.at("summary.fracture_location");
       for (auto &[w, name] :
@@ -135,6 +143,11 @@ namespace formsolve
       // Absent in checkpoints written before the tools were output.
       if (m.count("pvd.tools"))
         tool_writer->set_records(records(m.at("pvd.tools")));
+      split.load(m);
+      tool_loaded.clear();
+      if (m.count("tools_loaded"))
+        for (const char c : m.at("tools_loaded"))
+          tool_loaded.push_back(c == '1');
     }
 
     // The class is instantiated in time_loop.cc; these members are here.

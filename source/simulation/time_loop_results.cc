@@ -12,11 +12,13 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <tuple>
 
@@ -78,13 +80,14 @@ namespace formsolve
     }
 
     template <int dim>
-    bool
+    postprocess::SplitEvent<dim>
     TimeLoop<dim>::check_fracture(const postprocess::FormingMeasures<dim> &m,
                                   RunSummary &summary)
     {
-      const auto criterion = damage.criterion();
+      postprocess::SplitEvent<dim> event;
+      const auto                   criterion = damage.criterion();
       if (criterion == parameters::FractureCriterion::none)
-        return false;
+        return event;
       const bool   oyane  = criterion == parameters::FractureCriterion::oyane;
       const double travel = state.tools.punch_travel();
       const auto  &c      = m.through_thickness;
@@ -94,17 +97,16 @@ namespace formsolve
                                   parameters::FractureMeasure,
                                   const char *>,
                        2>
-           measures{{{&summary.local,
+        measures{{{&summary.local,
                    oyane ? m.oyane.value : m.cockcroft_latham_ratio,
                    oyane ? m.oyane.location : m.cockcroft_latham.location,
-                      parameters::FractureMeasure::local,
-                      "its local maximum"},
-                     {&summary.through_thickness,
+                   parameters::FractureMeasure::local,
+                   "its local maximum"},
+                  {&summary.through_thickness,
                    oyane ? c.oyane.value : c.cockcroft_latham.value,
                    oyane ? c.oyane.location : c.cockcroft_latham.location,
-                      parameters::FractureMeasure::through_thickness,
-                      "its average through the thickness"}}};
-      bool fractured = false;
+                   parameters::FractureMeasure::through_thickness,
+                   "its average through the thickness"}}};
       for (const auto &[w, value, location, measure, name] : measures)
         {
           if (w->stroke < 0 && value >= 1)
@@ -127,23 +129,33 @@ namespace formsolve
                 {
                   summary.critical_stroke   = w->stroke;
                   summary.fracture_location = w->location;
-                  fractured                 = true;
+                  event.travel              = w->stroke;
+                  event.location            = location;
+                  event.value               = value;
+                  // The point's reference position is not kept.
+                  event.reference_radius =
+                    std::numeric_limits<double>::quiet_NaN();
                 }
             }
           w->last        = value;
           w->last_travel = travel;
         }
-      return fractured;
+      return event;
     }
 
     template <int dim>
-    void TimeLoop<dim>::write_summary(RunSummary &summary) const
+    void TimeLoop<dim>::measure_memory(RunSummary &summary) const
     {
       Utilities::System::MemoryStats mem;
       Utilities::System::get_memory_stats(mem);
       summary.peak_memory_kb = Utilities::MPI::sum(double(mem.VmHWM), comm);
       summary.peak_memory_kb_max_rank =
         Utilities::MPI::max(double(mem.VmHWM), comm);
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::write_summary(const RunSummary &summary) const
+    {
       if (Utilities::MPI::this_mpi_process(comm) != 0)
         return;
       const auto &sh = sheet.summary();
@@ -205,7 +217,15 @@ namespace formsolve
         << "\nfracture_location_through_thickness = "
         << summary.through_thickness.location
         << "\nforming_limit = " << sheet.forming_limit().source()
-        << "\nsafety_margin = " << prm.material.safety_margin;
+        << "\nflc0 = " << sheet.forming_limit().plane_strain_limit()
+        << "\nsafety_margin = " << prm.material.safety_margin
+        << "\nsevere_thinning = " << prm.material.severe_thinning
+        << "\ninsufficient_stretch = " << prm.material.insufficient_stretch
+        << "\nflc_margin_percent = " << sh.flc_margin;
+      for (unsigned int z = 0; z < material::n_safety_zones; ++z)
+        f << "\ncolumns_" << material::zone_key(material::SafetyZone(z))
+          << " = " << sh.zone_count[z];
+      f << split_summary();
       if (!earing.angle.empty())
         {
           f << "\ncup_height_mean = " << earing.mean
@@ -216,14 +236,72 @@ namespace formsolve
         }
       f << "\nblank_holder_force = " << prm.tools.holder_force
         << "\nironing_travel = " << summary.ironing_travel
-        << "\nmax_ironing_force = " << summary.max_ironing_force;
-      const auto warnings = parameters::plausibility_warnings(prm);
+        << "\nmax_ironing_force = " << summary.max_ironing_force
+        << "\nmax_ironing_pressure = " << summary.max_ironing_pressure;
+      auto warnings = parameters::plausibility_warnings(prm);
+      for (const auto &w : scene_warnings)
+        warnings.push_back(w);
+      for (const auto &w : run_warnings())
+        warnings.push_back(w);
       f << "\nwarnings = " << warnings.size();
       for (std::size_t k = 0; k < warnings.size(); ++k)
         f << "\nwarning_" << k + 1 << " = " << warnings[k];
       f << "\nend_reason = " << summary.end_reason << "\n";
       postprocess::write_atomically(prm.output.directory + "/run-summary.txt",
                                     [&](std::ostream &o) { o << f.str(); });
+    }
+
+    template <int dim>
+    std::string TimeLoop<dim>::split_summary() const
+    {
+      // -1: not met (machine-readable; the report says it in words).
+      std::ostringstream f;
+      f.precision(8);
+      const bool  split_ = split.split();
+      const auto &e      = split.first();
+      f << "\nsplit = " << (split_ ? "yes" : "no")
+        << "\nsplit_travel = " << (split_ ? e.travel : -1.)
+        << "\nsplit_measure = "
+        << (split_ ? postprocess::split_measure_name(split.split_measure())
+                   : std::string("none"))
+        << "\nsplit_location = " << (split_ ? e.where() : std::string());
+      // The same as numbers: the column's planform position (R0, angle from
+      // x) and its current mid-surface point (NaN: not known / no split).
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      f << "\nsplit_R0 = " << (split_ ? e.reference_radius : nan)
+        << "\nsplit_angle = " << (split_ ? e.reference_angle : nan);
+      const char *names[] = {dim == 2 ? "r" : "x", dim == 2 ? "z" : "y", "z"};
+      for (unsigned int d = 0; d < dim; ++d)
+        f << "\nsplit_" << names[d] << " = " << (split_ ? e.location[d] : nan);
+      for (const auto m : {postprocess::SplitMeasure::forming_limit,
+                           postprocess::SplitMeasure::neck,
+                           postprocess::SplitMeasure::fracture})
+        {
+          std::string key = postprocess::split_measure_name(m);
+          std::replace(key.begin(), key.end(), ' ', '_');
+          const auto &ev = split.event(m);
+          f << "\n"
+            << key << "_travel = " << ev.travel << "\n"
+            << key << "_location = " << (ev.met() ? ev.where() : std::string());
+        }
+      f << "\nsplit_measures ="
+        << (prm.split.by_forming_limit ? " forming_limit" : "")
+        << (prm.split.by_neck ? " neck" : "")
+        << (prm.split.by_fracture ? " fracture_criterion" : "");
+      return f.str();
+    }
+
+    template <int dim>
+    std::vector<std::string> TimeLoop<dim>::run_warnings() const
+    {
+      std::vector<std::string> w;
+      for (unsigned int t = 0; t < tool_loaded.size(); ++t)
+        if (!tool_loaded[t])
+          w.push_back("Tools/" + state.tools[t].name() +
+                      ": the tool never touched the sheet (its force stayed "
+                      "0 over the run); check its position and stroke "
+                      "against the blank");
+      return w;
     }
 
     template <int dim>
@@ -262,11 +340,14 @@ namespace formsolve
     // here.
 #define INSTANTIATE(dim)                                                       \
   template postprocess::FormingMeasures<dim> TimeLoop<dim>::measure_forming(); \
-  template bool                              TimeLoop<dim>::check_fracture(    \
-    const postprocess::FormingMeasures<dim> &,    \
-    RunSummary &);                                \
-  template void TimeLoop<dim>::write_summary(RunSummary &) const;              \
-  template void TimeLoop<dim>::make_report() const;
+  template postprocess::SplitEvent<dim>      TimeLoop<dim>::check_fracture(    \
+    const postprocess::FormingMeasures<dim> &,                            \
+    RunSummary &);                                                        \
+  template void        TimeLoop<dim>::measure_memory(RunSummary &) const;      \
+  template void        TimeLoop<dim>::write_summary(const RunSummary &) const; \
+  template std::string TimeLoop<dim>::split_summary() const;                   \
+  template std::vector<std::string> TimeLoop<dim>::run_warnings() const;       \
+  template void                     TimeLoop<dim>::make_report() const;
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace simulation

@@ -189,6 +189,7 @@ expect tool_direction_symmetry "Tools/Pad/Direction: must lie in the model's sym
   --set "Tools/Pad/Direction=1, 0, -1"
 # Checkpoint and restart.
 expect resume_other_case "written by another case" "$base" --resume
+expect resume_names_entry "Geometry/Thickness = '3' in the checkpoint, '10' now" "$base" --resume
 expect resume_no_checkpoint "no complete checkpoint" "$base" --resume \
   --set "Output/Output directory=$work/no-checkpoint"
 [ ! -e "$work/no-checkpoint" ] || { echo "FAIL: resume_no_checkpoint created $work/no-checkpoint"; fail=1; }

@@ -8,7 +8,7 @@ with the measured thickness t(r) of sheet.csv."""
 import csv, math, os, sys
 
 out, t0, flat_from = sys.argv[1], 0.78, 21.25 + 8 + 0.78
-cols = sorted(({k: float(v) for k, v in c.items()} for c in csv.DictReader(open(os.path.join(out, "sheet.csv")))),
+cols = sorted(({k: float(v) for k, v in c.items() if k != "zone_name"} for c in csv.DictReader(open(os.path.join(out, "sheet.csv")))),
               key=lambda c: c["reference_radius"])
 flange = [c for c in cols if c["r"] > flat_from]
 assert len(flange) >= 5, "too few flange columns"

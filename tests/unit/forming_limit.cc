@@ -8,6 +8,9 @@
 #include "check.h"
 
 #include <cmath>
+#include <string>
+#include <tuple>
+#include <vector>
 
 using formsolve::material::FormingLimit;
 using formsolve::material::SafetyZone;
@@ -60,25 +63,49 @@ int main()
               table.major(0.5),
               0.4,
               0);
+  // The zones against the table's curve (FLC(0) = 0.3, margin 10 %) and
+  // the default thresholds: severe thinning above 30 %, i.e. major + minor
+  // > -ln(0.7) = 0.357; insufficient stretch below 2 % major strain.
   const auto zone = [&](double minor, double major, double damage) {
     return static_cast<int>(table.zone(minor, major, damage));
   };
-  test::close("zone: safe", zone(0.05, 0.1, 0), int(SafetyZone::safe), 0);
-  test::close("zone: marginal within 10 % below the curve",
-              zone(0., 0.28, 0),
-              int(SafetyZone::marginal),
-              0);
-  test::close("zone: necking above the curve",
-              zone(0., 0.31, 0),
-              int(SafetyZone::necking),
-              0);
-  test::close("zone: fracture once damage reaches 1",
-              zone(0., 0.1, 1.),
-              int(SafetyZone::fracture),
-              0);
-  test::close("zone: wrinkling tendency",
-              zone(-0.1, 0.05, 0),
-              int(SafetyZone::wrinkling),
+  const std::vector<
+    std::tuple<const char *, double, double, double, SafetyZone>>
+    points = {
+      {"safe", 0.05, 0.1, 0, SafetyZone::safe},
+      {"insufficient stretch below 2 % major",
+       0.005,
+       0.015,
+       0,
+       SafetyZone::insufficient_stretch},
+      {"wrinkling tendency: major + minor < 0",
+       -0.1,
+       0.05,
+       0,
+       SafetyZone::wrinkling},
+      {"compression: both negative", -0.1, -0.02, 0, SafetyZone::compression},
+      {"severe thinning: 1 - exp(-0.4) > 0.3 below the margin",
+       0.15,
+       0.25,
+       0,
+       SafetyZone::severe_thinning},
+      {"risk of crack within 10 % below the curve",
+       0.,
+       0.28,
+       0,
+       SafetyZone::risk_of_crack},
+      {"crack at the curve", 0., 0.3, 0, SafetyZone::crack},
+      {"crack above the curve", -0.2, 0.51, 0, SafetyZone::crack},
+      {"fracture once damage reaches 1", 0., 0.1, 1., SafetyZone::fracture}};
+  for (const auto &[what, minor, major, damage, expected] : points)
+    test::close(std::string("zone: ") + what,
+                zone(minor, major, damage),
+                int(expected),
+                0);
+  test::close("zone names as column keys",
+              formsolve::material::zone_key(SafetyZone::risk_of_crack) ==
+                "risk_of_crack",
+              1,
               0);
   return test::result();
 }

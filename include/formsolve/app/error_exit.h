@@ -4,6 +4,7 @@
 
 #include <mpi.h>
 
+#include <exception>
 #include <string>
 
 namespace formsolve
@@ -24,6 +25,10 @@ namespace formsolve
     /// The message of an exception on one line (deal.II's are spread over
     /// several indented lines).
     std::string one_line(const std::string &text);
+
+    /// What an exception says, on one line: deal.II's own text without its
+    /// file, line and stack (print_info), else what().
+    std::string exception_text(const std::exception &e);
 
     /// Test hook: if the environment variable FORMSOLVE_FAIL_ON_RANK names
     /// this rank and FORMSOLVE_FAIL_AT_STEP this step, throw there, as a

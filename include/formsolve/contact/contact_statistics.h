@@ -21,6 +21,8 @@ namespace formsolve
       /// Normal force on each tool's side walls (pairs whose normal is
       /// within 6 degrees of horizontal, |n_z| < 0.1), N, modelled part.
       std::vector<double> tool_wall_force;
+      /// Contact area of those pairs (mm^2, modelled part).
+      std::vector<double> tool_wall_area;
       /// Punch travel (mm) of the configuration the forces act on: the
       /// start of the step, on which the velocities were solved.
       double              force_travel = 0;
@@ -48,6 +50,21 @@ namespace formsolve
       return die < s.tool_wall_force.size()
                ? std::min(s.tool_wall_force[punch], s.tool_wall_force[die])
                : 0.;
+    }
+
+    /// The mean normal pressure on the ironed wall (MPa): the smaller of
+    /// the punch's and the die's wall force per wall contact area, 0 unless
+    /// both press on the wall.
+    template <int dim>
+    double ironing_pressure(const ContactStatistics<dim> &s,
+                            const unsigned int            punch,
+                            const unsigned int            die)
+    {
+      if (die >= s.tool_wall_area.size() || s.tool_wall_area[punch] <= 0 ||
+          s.tool_wall_area[die] <= 0)
+        return 0.;
+      return std::min(s.tool_wall_force[punch] / s.tool_wall_area[punch],
+                      s.tool_wall_force[die] / s.tool_wall_area[die]);
     }
 
     template <int dim>

@@ -12,17 +12,26 @@ namespace formsolve
 {
   namespace material
   {
-    /// Safety zone of a sheet point, ordered by severity.
+    /// The zones of the forming limit diagram, ordered by severity: a point
+    /// is in the most severe one whose condition it meets (true strains,
+    /// major >= minor; doc/theory.md, section 11).
     enum class SafetyZone : int
     {
-      safe      = 0,
-      wrinkling = 1, // minor strain compressive and thickening: eps_1 < -eps_2
-      marginal  = 2, // major strain above (1 - margin) FLC
-      necking   = 3, // major strain above the FLC
-      fracture  = 4  // the deciding damage criterion has reached 1
+      safe                 = 0,
+      insufficient_stretch = 1, // stretched, major below the threshold
+      wrinkling            = 2, // thickening: major + minor < 0
+      compression          = 3, // both strains negative
+      severe_thinning      = 4, // 1 - exp(-(major + minor)) above the limit
+      risk_of_crack        = 5, // major at or above (1 - margin) FLC
+      crack                = 6, // major at or above the FLC
+      fracture             = 7  // the deciding damage criterion reached 1
     };
+    constexpr unsigned int n_safety_zones = 8;
 
+    /// "risk of crack", ...; and the same as a column name,
+    /// "risk_of_crack".
     std::string zone_name(const SafetyZone z);
+    std::string zone_key(const SafetyZone z);
 
     class FormingLimit
     {
@@ -45,7 +54,7 @@ namespace formsolve
     private:
       std::vector<std::pair<double, double>> table; // user table, or empty
       double      flc0_engineering = 0;             // Keeler-Brazier, (-)
-      double      margin;
+      double      margin, thinning, stretch;
       std::string origin;
     };
   } // namespace material

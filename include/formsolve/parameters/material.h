@@ -5,6 +5,8 @@
 
 #include <formsolve/parameters/anisotropy.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -67,11 +69,12 @@ namespace formsolve
       double     volumetric_penalty    = 1e4; // alpha (-)
       Anisotropy anisotropy;                  // yield criterion and its data
 
-      // Ductile fracture (material B of the reference scene by default).
-      double            oyane_a          = 0.020; // (-)
-      double            oyane_b          = 0.217; // (-)
-      double            cockcroft_latham = 0;     // C_crit (MPa), 0: not set
-      FractureCriterion fracture         = FractureCriterion::oyane;
+      // Ductile fracture: no criterion unless one is chosen with the
+      // constants of this sheet (NaN: not given).
+      double oyane_a          = std::numeric_limits<double>::quiet_NaN(); // (-)
+      double oyane_b          = std::numeric_limits<double>::quiet_NaN(); // (-)
+      double cockcroft_latham = 0; // C_crit (MPa), 0: not set
+      FractureCriterion fracture         = FractureCriterion::none;
       FractureMeasure   fracture_measure = FractureMeasure::through_thickness;
       MeanStress        mean_stress      = MeanStress::cell_pressure;
 
@@ -79,6 +82,15 @@ namespace formsolve
       // (minor, major true strains, minor increasing) is given.
       std::vector<std::pair<double, double>> forming_limit_table;
       double                                 safety_margin = 0.1; // (-)
+      // The other zones of the forming limit diagram.
+      double severe_thinning      = 0.3;  // thinning fraction (-)
+      double insufficient_stretch = 0.02; // major true strain (-)
+
+      /// Whether Oyane's constants are given.
+      bool oyane_given() const
+      {
+        return std::isfinite(oyane_a) && std::isfinite(oyane_b);
+      }
 
       /// The flow curve's stress scale (MPa): K, or A for Voce.
       double stress_scale() const

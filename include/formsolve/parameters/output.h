@@ -17,11 +17,11 @@ namespace formsolve
       std::string         directory = "results/cup-drawing";
       unsigned int        interval  = 5; // VTU every N steps (0: never)
       bool                wall_time_in_history = true;
-      bool                revolved_copy    = false; // axisymmetric: 3-D VTU too
-      double              revolved_angle   = 270;   // degrees swept
-      bool                stop_at_fracture = false; // end the run at fracture
-      bool                report           = true;  // report/ at the end
-      unsigned int        checkpoint_interval = 0;  // steps; 0: at the end only
+      bool                revolved_copy  = false;   // axisymmetric: 3-D VTU too
+      double              revolved_angle = 270;     // degrees swept
+      bool                report         = true;    // report/ at the end
+      unsigned int        checkpoint_interval = 0;  // steps; 0: off
+      double              checkpoint_minutes  = 10; // wall time; 0: off
       std::vector<double> profile_travels; // mm: sheet_<travel>mm.csv there
 
       static void declare(ParameterHandler &prm);

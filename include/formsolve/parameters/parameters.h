@@ -8,6 +8,7 @@
 #include <formsolve/parameters/output.h>
 #include <formsolve/parameters/refinement.h>
 #include <formsolve/parameters/solvers.h>
+#include <formsolve/parameters/split.h>
 #include <formsolve/parameters/tools.h>
 
 namespace formsolve
@@ -25,6 +26,7 @@ namespace formsolve
       TimeStepping    time;
       NonlinearSolver nonlinear;
       LinearSolver    linear;
+      Split           split;
       Output          output;
 
       static void declare(ParameterHandler &prm);

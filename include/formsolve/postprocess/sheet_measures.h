@@ -37,6 +37,9 @@ namespace formsolve
       double damage             = 0; // deciding criterion, column max
       material::SafetyZone zone = material::SafetyZone::safe;
       bool                 rim  = false; // on the blank's outer edge
+      /// Tools press on both its surfaces (it may thin by being squeezed,
+      /// as an ironed wall).
+      bool squeezed = false;
       // Highest and lowest current coordinate along the last axis of the
       // column's surface nodes (mm): the cup height.
       double top = 0, bottom = 0;
@@ -52,14 +55,18 @@ namespace formsolve
       /// 100 (1 - the largest ratio of a column's major strain to the
       /// FLC's at its minor strain) (%): negative past the curve.
       double flc_margin = 100;
+      /// The column nearest the FLC (the margin's): reference radius and
+      /// angle (degrees from x), current mid-surface point.
+      double             flc_radius = 0, flc_angle = 0;
+      dealii::Point<dim> flc_location;
       /// Lowest point of the sheet to the highest of its rim (mm).
       double cup_height   = 0;
       double blank_radius = 0; // largest reference radius
       /// Rim radius (current, mm) and draw-in R0 - r per direction: in 3-D
       /// x, the diagonal (a rectangular blank's corner, else 45 degrees) and
       /// y (NaN outside the modelled part); one value in axisymmetry.
-      std::vector<double>         rim_radius, draw_in;
-      std::array<unsigned int, 5> zone_count{}; // columns per safety zone
+      std::vector<double>                                rim_radius, draw_in;
+      std::array<unsigned int, material::n_safety_zones> zone_count{};
     };
 
     template <int dim>
@@ -88,8 +95,13 @@ namespace formsolve
       void write_csv(const std::string &directory,
                      const std::string &name = "sheet.csv") const;
 
+      /// The columns' planform keys (rank 0, in the order of columns()).
+      const std::vector<Key> &column_keys() const { return keys; }
+
       /// The planform key of a reference position.
       static Key key(const dealii::Point<dim> &reference);
+      /// Distance of two columns in the reference planform (mm).
+      static double distance(const Key &a, const Key &b);
 
     private:
       /// Planform keys are reference positions in units of quantum (mm).
@@ -98,7 +110,8 @@ namespace formsolve
       static constexpr unsigned int n_corners = dim == 2 ? 2 : 4;
 
       /// One rank's measurements, flat vectors of doubles gathered on rank 0.
-      /// nodes: key, side (0 bottom, 1 top, 2 rim), current position (dim);
+      /// nodes: key, side (0 bottom, 1 top, 2 rim), whether a tool presses
+      /// on it, current position (dim);
       /// cells: corner keys, corner mid-plane points, major, minor, normal;
       /// damages: corner keys, largest deciding damage in the cell.
       struct Records
@@ -109,6 +122,8 @@ namespace formsolve
       /// and every cell's damage.
       Records local_records(const state::State<dim>        &state,
                             const material::DamageCriteria &damage) const;
+      /// The nodes part of local_records().
+      std::vector<double> node_records(const state::State<dim> &state) const;
       /// Rank 0: cols and keys from the records of all ranks
       /// (source/postprocess/sheet_columns.cc).
       void assemble_columns(const std::vector<std::vector<double>> &nodes,

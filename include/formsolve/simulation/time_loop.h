@@ -16,6 +16,7 @@
 #include <formsolve/postprocess/history_writer.h>
 #include <formsolve/postprocess/progress.h>
 #include <formsolve/postprocess/sheet_measures.h>
+#include <formsolve/postprocess/split_watch.h>
 #include <formsolve/postprocess/statistics_table.h>
 #include <formsolve/postprocess/through_thickness.h>
 #include <formsolve/postprocess/tool_writer.h>
@@ -66,8 +67,11 @@ namespace formsolve
       double max_penetration          = 0; // mm, over the run
       /// Ironing: the punch travel (mm) at which the wall was first
       /// squeezed between punch and die with more than 0.5 % of the punch
-      /// force (-1: never), and the largest such force (N, full part).
+      /// force (-1: never), the largest such force (N, full part: the normal
+      /// forces on the wall summed, which may exceed the axial punch force)
+      /// and the largest pressure on the wall.
       double ironing_travel = -1, max_ironing_force = 0;
+      double max_ironing_pressure = 0; // MPa, on the ironed wall
       /// Punch travel at which the deciding fracture criterion first reached
       /// 1 by Material/Fracture measure (interpolated between steps), -1 if
       /// it did not.
@@ -84,7 +88,9 @@ namespace formsolve
       };
       Watch       local, through_thickness;
       std::string end_reason;
-      double      wall_before = 0; // s of wall time before a resume
+      /// The step failed at the minimum time step: the run ended there.
+      bool   solver_failed = false;
+      double wall_before   = 0; // s of wall time before a resume
     };
 
     template <int dim>
@@ -94,10 +100,13 @@ namespace formsolve
       TimeLoop(const parameters::Run &run, const dealii::ParameterHandler &prm);
 
       /// Set up, check the scene, create the output folder, run all steps;
-      /// with @p resume, continue from the newest checkpoint instead. Throws
-      /// with a clear message when a step fails at the minimum time step
-      /// (after writing the output and a checkpoint of the last converged
-      /// step).
+      /// with @p resume, continue from the newest checkpoint instead. Every
+      /// run that stops after its set-up leaves its closing files (last
+      /// VTU, sheet.csv, run-summary.txt with end_reason, the report).
+      /// Throws with a clear message when a step fails at the minimum time
+      /// step without a split before it (after writing those files and a
+      /// checkpoint of the last converged step), and passes on any other
+      /// error after writing what rank 0 can write alone.
       RunSummary run(const bool resume = false);
 
       /// Build the mesh and check the initial scene, then stop (--validate).
@@ -109,20 +118,37 @@ namespace formsolve
       /// start.
       void start(const bool resume, RunSummary &summary);
       void start_refinement(const bool resume);
-      /// The next step, accounted in @p summary; a step that fails at the
-      /// minimum time step leaves output and a checkpoint, then throws.
+      /// The steps up to the end of the run; its reason in @p summary.
+      void run_steps(RunSummary &summary);
+      /// The next step, accounted in @p summary (converged or failed at the
+      /// minimum time step).
       solver::StepReport solve_step(RunSummary &summary);
-      /// The converged step: state update, history.csv, the screen line.
-      /// Whether the fracture criterion has reached 1.
-      bool record_step(const solver::StepReport &report, RunSummary &summary);
+      /// The converged step: state update, history.csv, the split watch,
+      /// the screen line.
+      void record_step(const solver::StepReport &report, RunSummary &summary);
+      /// The first occurrence of each split measure, said on screen.
+      void announce_split(const std::vector<postprocess::SplitMeasure> &found);
+      /// The punch travel at which the run stops after its split (infinite
+      /// if it does not stop for it).
+      double split_stop_travel() const;
+      /// Why the run ended after the split, and after a failed step.
+      std::string split_reason() const;
+      std::string failure_reason(const solver::StepReport &report) const;
       /// Ironing's first appearance on screen, its largest force in the
       /// summary.
       void note_ironing(const contact::ContactStatistics<dim> &s,
                         const double                           punch_force,
                         RunSummary                            &summary);
       void save_checkpoint(RunSummary &summary);
+      /// Whether a checkpoint is due after this step: by Output/Checkpoint
+      /// interval, or by Checkpoint wall time on rank 0's clock.
+      bool checkpoint_due() const;
       /// Last output and checkpoint, summaries, report.
       void finish(RunSummary &summary);
+      /// After an error past the first step: run-summary.txt, sheet.csv of
+      /// the last converged step and the report, by rank 0 alone (the other
+      /// ranks may not share the error); nothing collective.
+      void close_after_error(RunSummary &summary, const std::string &error);
       /// Wall time of the run, that before a resume included (s).
       double seconds() const
       {
@@ -131,8 +157,15 @@ namespace formsolve
                                 .count();
       }
 
-      void check_initial_scene();
-      void prepare_output_directory();
+      /// The scene before the first step: errors for a blank inside a tool
+      /// or off the die and holder; warnings (scene_warnings) for a tool
+      /// that can never touch the sheet and a mesh too coarse for the
+      /// step or the bending.
+      void        check_initial_scene();
+      void        check_reach();
+      void        check_resolution();
+      std::string die_message() const;
+      void        prepare_output_directory();
       /// Adapt the mesh; logs a row of refinement.csv. Whether it changed.
       bool adapt();
       /// solution_<step> and tools_<step>
@@ -141,17 +174,33 @@ namespace formsolve
       /// How far the tools' unbounded faces and walls are drawn.
       tools::SurfaceExtent tool_extent() const;
       /// Holder release and draw-through; the reason to end the run, or "".
+      /// Sets to_end.
       std::string check_events();
+      /// The screen line of a converged step.
+      void print_step(const solver::StepReport &report,
+                      const double              force,
+                      const double              penetration);
       /// Nonlinear solver/First step start = coarser mesh: the first step
       /// solved on the coarser mesh, as the start of the real one.
       void start_from_coarser_mesh(RunSummary &summary);
-      void write_summary(RunSummary &summary) const;
+      /// The forming results of the run on screen: split, fracture,
+      /// thickness, FLD zones, tools that never touched the sheet.
+      void print_results(const RunSummary &summary);
+      /// Memory statistics of all ranks (collective).
+      void measure_memory(RunSummary &summary) const;
+      /// run-summary.txt (rank 0).
+      void write_summary(const RunSummary &summary) const;
+      /// The split lines of run-summary.txt.
+      std::string split_summary() const;
+      /// Warnings of the run itself (tools that never touched the sheet).
+      std::vector<std::string> run_warnings() const;
       /// Thickness, strains, zones, draw-in and damage maxima of the state.
       postprocess::FormingMeasures<dim> measure_forming();
-      /// Whether the deciding criterion has reached 1 in this step; records
-      /// the critical stroke in @p summary and says so.
-      bool check_fracture(const postprocess::FormingMeasures<dim> &m,
-                          RunSummary                              &summary);
+      /// The deciding criterion's event if it has reached 1 in this step;
+      /// records the critical stroke in @p summary and says so.
+      postprocess::SplitEvent<dim>
+      check_fracture(const postprocess::FormingMeasures<dim> &m,
+                     RunSummary                              &summary);
       /// report/ by scripts/formsolve-report (rank 0; never fails the run).
       void make_report() const;
       /// The time loop's values for a checkpoint, and back (resume).
@@ -179,6 +228,7 @@ namespace formsolve
       postprocess::ContactFields<dim>               contact_fields;
       postprocess::SheetMeasures<dim>               sheet;
       postprocess::ThroughThicknessDamage<dim>      column_damage;
+      postprocess::SplitWatch<dim>                  split;
       postprocess::EaringProfile earing; // 3-D round blanks, rank 0, at the end
       std::unique_ptr<const Checkpoint<dim>>           checkpoint;
       std::unique_ptr<postprocess::HistoryWriter<dim>> history;
@@ -186,7 +236,18 @@ namespace formsolve
       std::chrono::steady_clock::time_point            start_time;
       const double *wall_before      = nullptr; // the summary's
       int           last_output_step = -1;
-      unsigned int  refinement_rows  = 0;
+      /// How far a run that ends by an event is from it (mm): the flange
+      /// left on the die (draw-through) or under the holder (holder
+      /// release); NaN for a run that ends at a travel. For the time left.
+      double to_go           = 0;
+      double last_checkpoint = 0;     // wall time of the last checkpoint (s)
+      bool   split_said      = false; // the split announced on screen
+      /// Whether each tool has carried a force yet (a tool that never
+      /// does is said at the end).
+      std::vector<bool> tool_loaded;
+      /// What check_initial_scene found worth a warning.
+      std::vector<std::string> scene_warnings;
+      unsigned int             refinement_rows = 0;
     };
   } // namespace simulation
 } // namespace formsolve

@@ -1,0 +1,276 @@
+#include <deal.II/base/mpi.h>
+
+#include <formsolve/model/dimensions.h>
+#include <formsolve/model/position_order.h>
+#include <formsolve/postprocess/split_watch.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace formsolve
+{
+  namespace postprocess
+  {
+    using namespace dealii;
+
+    std::string split_measure_name(const SplitMeasure m)
+    {
+      switch (m)
+        {
+          case SplitMeasure::forming_limit:
+            return "forming limit";
+          case SplitMeasure::neck:
+            return "neck";
+          case SplitMeasure::fracture:
+            return "fracture criterion";
+        }
+      return "";
+    }
+
+    template <int dim>
+    std::string SplitEvent<dim>::where() const
+    {
+      std::ostringstream now;
+      now.precision(4);
+      now << (dim == 2 ? "r = " : "x = ") << location[0]
+          << (dim == 2 ? ", z = " : ", y = ") << location[1];
+      if (dim == 3)
+        now << ", z = " << location[dim - 1];
+      now << " mm";
+      // A point whose reference position is not known: where it is now.
+      if (std::isnan(reference_radius))
+        return now.str();
+      std::ostringstream s;
+      s.precision(4);
+      s << "R0 = " << reference_radius << " mm";
+      if (dim == 3)
+        s << ", " << reference_angle << " degrees from x";
+      s << " (now " << now.str() << ")";
+      return s.str();
+    }
+
+    template <int dim>
+    SplitWatch<dim>::SplitWatch(const parameters::Split &split,
+                                const double             thickness)
+        : prm(split)
+        , t0(thickness)
+    {}
+
+    template <int dim>
+    bool SplitWatch<dim>::marks_split(const SplitMeasure m) const
+    {
+      return m == SplitMeasure::forming_limit ? prm.by_forming_limit
+             : m == SplitMeasure::neck        ? prm.by_neck
+                                              : prm.by_fracture;
+    }
+
+    template <int dim>
+    SplitMeasure SplitWatch<dim>::split_measure() const
+    {
+      // The earliest in punch travel; in a tie, the first listed.
+      SplitMeasure best = SplitMeasure::forming_limit;
+      double       at   = std::numeric_limits<double>::infinity();
+      for (unsigned int m = 0; m < events.size(); ++m)
+        if (events[m].met() && marks_split(SplitMeasure(m)) &&
+            events[m].travel < at)
+          at = events[m].travel, best = SplitMeasure(m);
+      return best;
+    }
+
+    template <int dim>
+    bool SplitWatch<dim>::split() const
+    {
+      for (unsigned int m = 0; m < events.size(); ++m)
+        if (events[m].met() && marks_split(SplitMeasure(m)))
+          return true;
+      return false;
+    }
+
+    template <int dim>
+    const SplitEvent<dim> &SplitWatch<dim>::first() const
+    {
+      return event(split_measure());
+    }
+
+    template <int dim>
+    std::vector<SplitMeasure>
+    SplitWatch<dim>::observe(const SheetMeasures<dim> &sheet,
+                             const double              travel,
+                             const double              punch_force,
+                             const SplitEvent<dim>    &fracture,
+                             const MPI_Comm            comm)
+    {
+      std::vector<SplitMeasure> found;
+      auto                     &flc    = events[0];
+      const auto               &s      = sheet.summary();
+      const double              margin = s.flc_margin;
+      if (!flc.met() && margin < 0)
+        {
+          // Linear in the punch travel between the two steps.
+          const double w = last_margin > 0 ? last_margin / (last_margin - margin)
+                                           : 1.;
+          flc.travel           = last_travel + w * (travel - last_travel);
+          flc.reference_radius = s.flc_radius;
+          flc.reference_angle  = s.flc_angle;
+          flc.location         = s.flc_location;
+          flc.value            = 1 - margin / 100;
+          found.push_back(SplitMeasure::forming_limit);
+        }
+
+      // The neck is judged on rank 0, which holds the columns.
+      SplitEvent<dim>     neck;
+      std::vector<double> packed;
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          neck   = find_neck(sheet, travel, punch_force);
+          packed = {neck.travel,
+                    neck.reference_radius,
+                    neck.reference_angle,
+                    neck.value};
+          for (unsigned int d = 0; d < dim; ++d)
+            packed.push_back(neck.location[d]);
+        }
+      packed = Utilities::MPI::broadcast(comm, packed, 0);
+      if (!events[1].met() && packed[0] >= 0)
+        {
+          auto &e            = events[1];
+          e.travel           = packed[0];
+          e.reference_radius = packed[1];
+          e.reference_angle  = packed[2];
+          e.value            = packed[3];
+          for (unsigned int d = 0; d < dim; ++d)
+            e.location[d] = packed[4 + d];
+          found.push_back(SplitMeasure::neck);
+        }
+
+      if (!events[2].met() && fracture.met())
+        {
+          events[2] = fracture;
+          found.push_back(SplitMeasure::fracture);
+        }
+      last_margin = margin;
+      last_travel = travel;
+      last_force  = punch_force;
+      return found;
+    }
+
+    template <int dim>
+    SplitEvent<dim>
+    SplitWatch<dim>::find_neck(const SheetMeasures<dim> &sheet,
+                               const double              travel,
+                               const double              punch_force)
+    {
+      const auto     &cols = sheet.columns();
+      const auto     &keys = sheet.column_keys();
+      SplitEvent<dim> neck;
+      // The thinnest column that no two tools squeeze (an ironed wall thins
+      // where the tools make it); of ties the first in the canonical order.
+      std::size_t thinnest = cols.size();
+      for (std::size_t c = 0; c < cols.size(); ++c)
+        if (!cols[c].squeezed &&
+            (thinnest == cols.size() ||
+             cols[c].thickness < cols[thinnest].thickness ||
+             (model::ties(cols[c].thickness, cols[thinnest].thickness) &&
+              model::precedes(cols[c].mid, cols[thinnest].mid))))
+          thinnest = c;
+      const double dtravel = travel - last_travel;
+      const auto   before  = thinnest < cols.size() ?
+                               last_thickness.find(keys[thinnest]) :
+                               last_thickness.end();
+      if (before != last_thickness.end() && dtravel > 0 &&
+          punch_force < last_force)
+        {
+          // Thickness strain increments of the step, positive thinning.
+          const double own = std::log(before->second / cols[thinnest].thickness);
+          double       sum = 0;
+          unsigned int n   = 0;
+          for (std::size_t c = 0; c < cols.size(); ++c)
+            {
+              const double d =
+                SheetMeasures<dim>::distance(keys[c], keys[thinnest]);
+              const auto it = last_thickness.find(keys[c]);
+              if (d < 2 * t0 || d > 5 * t0 || it == last_thickness.end())
+                continue;
+              sum += std::log(it->second / cols[c].thickness);
+              ++n;
+            }
+          // Neighbours that no longer thin: as localised as it gets.
+          const double mean = n > 0 ? sum / n : 0.;
+          const double localisation =
+            mean > 0 ? own / mean : std::numeric_limits<double>::infinity();
+          if (n > 0 && own / dtravel >= prm.neck_thinning_rate &&
+              localisation >= prm.neck_localisation)
+            {
+              neck.travel           = travel;
+              neck.reference_radius = cols[thinnest].reference_radius;
+              neck.reference_angle  = cols[thinnest].reference_angle;
+              neck.location         = cols[thinnest].mid;
+              neck.value            = localisation;
+            }
+        }
+      last_thickness.clear();
+      for (std::size_t c = 0; c < cols.size(); ++c)
+        last_thickness[keys[c]] = cols[c].thickness;
+      return neck;
+    }
+
+    template <int dim>
+    std::map<std::string, std::string> SplitWatch<dim>::save() const
+    {
+      std::map<std::string, std::string> v;
+      auto text = [](const double x) {
+        std::ostringstream s;
+        s.precision(17);
+        s << x;
+        return s.str();
+      };
+      for (unsigned int m = 0; m < events.size(); ++m)
+        {
+          const auto       &e = events[m];
+          const std::string k = "split." + std::to_string(m) + ".";
+          v[k + "travel"]     = text(e.travel);
+          v[k + "radius"]     = text(e.reference_radius);
+          v[k + "angle"]      = text(e.reference_angle);
+          v[k + "value"]      = text(e.value);
+          for (unsigned int d = 0; d < dim; ++d)
+            v[k + "x" + std::to_string(d)] = text(e.location[d]);
+        }
+      v["split.last_margin"] = text(last_margin);
+      v["split.last_travel"] = text(last_travel);
+      v["split.last_force"]  = text(last_force);
+      return v;
+    }
+
+    template <int dim>
+    void SplitWatch<dim>::load(const std::map<std::string, std::string> &v)
+    {
+      // Checkpoints written before the split was watched have none of it.
+      if (!v.count("split.last_margin"))
+        return;
+      for (unsigned int m = 0; m < events.size(); ++m)
+        {
+          auto             &e  = events[m];
+          const std::string k  = "split." + std::to_string(m) + ".";
+          e.travel             = std::stod(v.at(k + "travel"));
+          e.reference_radius   = std::stod(v.at(k + "radius"));
+          e.reference_angle    = std::stod(v.at(k + "angle"));
+          e.value              = std::stod(v.at(k + "value"));
+          for (unsigned int d = 0; d < dim; ++d)
+            e.location[d] = std::stod(v.at(k + "x" + std::to_string(d)));
+        }
+      last_margin = std::stod(v.at("split.last_margin"));
+      last_travel = std::stod(v.at("split.last_travel"));
+      last_force  = std::stod(v.at("split.last_force"));
+      // The columns' thicknesses are not kept: the neck is judged again
+      // from the second step after the resume.
+      last_thickness.clear();
+    }
+
+#define INSTANTIATE(dim)              \
+  template struct SplitEvent<dim>;    \
+  template class SplitWatch<dim>;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace postprocess
+} // namespace formsolve
