@@ -10,6 +10,20 @@ from .readers import column, number, read_csv, reached
 from .zones import ZONES
 
 
+
+def axes_done(ax, xlabel, ylabel):
+    """Axis labels, a light grid and the legend, as every plot has them."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+
+
+def save(fig, path, plt):
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
 def mark_split(ax, split, label=True):
     """The split's punch travel as a labelled vertical line."""
     if split:
@@ -59,9 +73,7 @@ def force_plot(run, split, path, plt):
         low.set_xlabel("punch travel (mm)")
     else:
         ax.set_xlabel("punch travel (mm)")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save(fig, path, plt)
 
 
 def sections(sheet, model):
@@ -98,13 +110,8 @@ def thickness_plot(run, at_split, path, plt):
     t0 = [r["thickness"] / (1 - r["thinning_percent"] / 100) for r in run.sheet if r["thinning_percent"] < 99]
     if t0:
         ax.axhline(t0[0], color="k", lw=0.8, ls=":", label=f"initial thickness {t0[0]:.3g} mm")
-    ax.set_xlabel("arc length from the pole along the mid-surface (mm)")
-    ax.set_ylabel("thickness (mm)")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    axes_done(ax, "arc length from the pole along the mid-surface (mm)", "thickness (mm)")
+    save(fig, path, plt)
 
 
 def fld_backdrop(run, e2, e1):
@@ -168,9 +175,7 @@ def fld_plot(run, at_split, split, path, plt):
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0,
               title=f"formsolve's zones\n(columns, {len(run.sheet)})", title_fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save(fig, path, plt)
 
 
 def damage_plot(run, split, path, plt):
@@ -193,13 +198,8 @@ def damage_plot(run, split, path, plt):
     mark_split(ax, split)
     if s.get("fracture_criterion") == "none":
         ax.set_title("no fracture criterion chosen: the integrals for information only", fontsize=9)
-    ax.set_xlabel("punch travel (mm)")
-    ax.set_ylabel("damage (fracture at 1)")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    axes_done(ax, "punch travel (mm)", "damage (fracture at 1)")
+    save(fig, path, plt)
 
 
 def rim_plot(run, report, plt):
@@ -235,8 +235,6 @@ def rim_plot(run, report, plt):
     ax.set_xlabel("angle in the blank (degrees" + (" to the rolling direction)" if made[1] == "earing.png"
                                                   else " from x)"))
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(report, made[1]), dpi=110)
-    plt.close(fig)
+    save(fig, os.path.join(report, made[1]), plt)
     return made
 

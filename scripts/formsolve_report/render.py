@@ -187,24 +187,18 @@ def part_actor(surface, field, lut, lo, hi, vtk):
 
 def add_tools(renderer, scene, vtk):
     """The tools faint (3-D), or their profiles on the cut faces (axisymmetric)."""
+    def plain(data, mapper, colour):
+        mapper.SetInputData(data)
+        mapper.ScalarVisibilityOff()
+        actor = vtk.vtkActor()
+        actor.SetMapper(mapper)
+        actor.GetProperty().SetColor(*colour)
+        renderer.AddActor(actor)
+        return actor.GetProperty()
     if scene["tools"] is not None:
-        tm = vtk.vtkDataSetMapper()
-        tm.SetInputData(scene["tools"])
-        tm.ScalarVisibilityOff()
-        ta = vtk.vtkActor()
-        ta.SetMapper(tm)
-        ta.GetProperty().SetColor(0.55, 0.55, 0.6)
-        ta.GetProperty().SetOpacity(0.2)
-        renderer.AddActor(ta)
+        plain(scene["tools"], vtk.vtkDataSetMapper(), (0.55, 0.55, 0.6)).SetOpacity(0.2)
     if scene["tool_lines"] is not None:
-        lm = vtk.vtkPolyDataMapper()
-        lm.SetInputData(scene["tool_lines"])
-        lm.ScalarVisibilityOff()
-        la = vtk.vtkActor()
-        la.SetMapper(lm)
-        la.GetProperty().SetColor(0.3, 0.3, 0.35)
-        la.GetProperty().SetLineWidth(2)
-        renderer.AddActor(la)
+        plain(scene["tool_lines"], vtk.vtkPolyDataMapper(), (0.3, 0.3, 0.35)).SetLineWidth(2)
 
 
 def add_marker(renderer, centre, size, vtk):
