@@ -9,9 +9,9 @@ namespace formsolve
   namespace material
   {
     std::vector<std::string> material_summary(const parameters::Material &p,
-                                              const RigidViscoplastic &law,
-                                              const DamageCriteria    &damage,
-                                              const double thickness)
+                                              const RigidViscoplastic    &law,
+                                              const DamageCriteria &damage,
+                                              const double          thickness)
     {
       std::vector<std::string> lines;
       std::ostringstream       flow;
@@ -68,8 +68,8 @@ namespace formsolve
             f << "fracture criterion: Cockcroft-Latham, C_crit = "
               << p.cockcroft_latham << " MPa as given";
             if (k != 1)
-              f << ", used as " << damage.critical_used()
-                << " MPa (k = " << k << ")";
+              f << ", used as " << damage.critical_used() << " MPa (k = " << k
+                << ")";
             break;
         }
       lines.push_back(f.str());

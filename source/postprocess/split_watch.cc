@@ -108,8 +108,8 @@ namespace formsolve
       if (!flc.met() && margin < 0)
         {
           // Linear in the punch travel between the two steps.
-          const double w = last_margin > 0 ? last_margin / (last_margin - margin)
-                                           : 1.;
+          const double w =
+            last_margin > 0 ? last_margin / (last_margin - margin) : 1.;
           flc.travel           = last_travel + w * (travel - last_travel);
           flc.reference_radius = s.flc_radius;
           flc.reference_angle  = s.flc_angle;
@@ -156,10 +156,9 @@ namespace formsolve
     }
 
     template <int dim>
-    SplitEvent<dim>
-    SplitWatch<dim>::find_neck(const SheetMeasures<dim> &sheet,
-                               const double              travel,
-                               const double              punch_force)
+    SplitEvent<dim> SplitWatch<dim>::find_neck(const SheetMeasures<dim> &sheet,
+                                               const double              travel,
+                                               const double punch_force)
     {
       const auto     &cols = sheet.columns();
       const auto     &keys = sheet.column_keys();
@@ -175,14 +174,15 @@ namespace formsolve
               model::precedes(cols[c].mid, cols[thinnest].mid))))
           thinnest = c;
       const double dtravel = travel - last_travel;
-      const auto   before  = thinnest < cols.size() ?
-                               last_thickness.find(keys[thinnest]) :
-                               last_thickness.end();
+      const auto   before  = thinnest < cols.size()
+                               ? last_thickness.find(keys[thinnest])
+                               : last_thickness.end();
       if (before != last_thickness.end() && dtravel > 0 &&
           punch_force < last_force)
         {
           // Thickness strain increments of the step, positive thinning.
-          const double own = std::log(before->second / cols[thinnest].thickness);
+          const double own =
+            std::log(before->second / cols[thinnest].thickness);
           double       sum = 0;
           unsigned int n   = 0;
           for (std::size_t c = 0; c < cols.size(); ++c)
@@ -219,7 +219,7 @@ namespace formsolve
     std::map<std::string, std::string> SplitWatch<dim>::save() const
     {
       std::map<std::string, std::string> v;
-      auto text = [](const double x) {
+      auto                               text = [](const double x) {
         std::ostringstream s;
         s.precision(17);
         s << x;
@@ -250,12 +250,12 @@ namespace formsolve
         return;
       for (unsigned int m = 0; m < events.size(); ++m)
         {
-          auto             &e  = events[m];
-          const std::string k  = "split." + std::to_string(m) + ".";
-          e.travel             = std::stod(v.at(k + "travel"));
-          e.reference_radius   = std::stod(v.at(k + "radius"));
-          e.reference_angle    = std::stod(v.at(k + "angle"));
-          e.value              = std::stod(v.at(k + "value"));
+          auto             &e = events[m];
+          const std::string k = "split." + std::to_string(m) + ".";
+          e.travel            = std::stod(v.at(k + "travel"));
+          e.reference_radius  = std::stod(v.at(k + "radius"));
+          e.reference_angle   = std::stod(v.at(k + "angle"));
+          e.value             = std::stod(v.at(k + "value"));
           for (unsigned int d = 0; d < dim; ++d)
             e.location[d] = std::stod(v.at(k + "x" + std::to_string(d)));
         }
@@ -267,8 +267,8 @@ namespace formsolve
       last_thickness.clear();
     }
 
-#define INSTANTIATE(dim)              \
-  template struct SplitEvent<dim>;    \
+#define INSTANTIATE(dim)           \
+  template struct SplitEvent<dim>; \
   template class SplitWatch<dim>;
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE

@@ -43,8 +43,8 @@ namespace formsolve
       tool_writer =
         std::make_unique<postprocess::ToolWriter<dim>>(prm.output.directory);
       start(resume, summary);
-      summary.n_dofs  = std::max(summary.n_dofs,
-                                double(state.dof_handler.n_dofs()));
+      summary.n_dofs =
+        std::max(summary.n_dofs, double(state.dof_handler.n_dofs()));
       last_checkpoint = seconds();
       try
         {
@@ -175,9 +175,8 @@ namespace formsolve
           if (m == SplitMeasure::fracture && !first)
             continue; // check_fracture has said it
           std::ostringstream s;
-          s << (first ? "split: " : "note: ")
-            << what<dim>(m, e, prm.material) << " at punch travel "
-            << mm(e.travel) << ", at " << e.where();
+          s << (first ? "split: " : "note: ") << what<dim>(m, e, prm.material)
+            << " at punch travel " << mm(e.travel) << ", at " << e.where();
           if (!split.marks_split(m))
             s << " (not a split by Split/Measures)";
           if (first)
@@ -197,7 +196,8 @@ namespace formsolve
     {
       const auto        &e = split.first();
       std::ostringstream s;
-      s << "the sheet split: " << what<dim>(split.split_measure(), e, prm.material)
+      s << "the sheet split: "
+        << what<dim>(split.split_measure(), e, prm.material)
         << " at punch travel " << mm(e.travel) << ", at " << e.where()
         << "; stopped " << mm(state.tools.punch_travel() - e.travel)
         << " past it (Split/After a split = stop)";
@@ -277,13 +277,14 @@ namespace formsolve
       pcout << "forming results: minimum thickness " << sh.min_thickness
             << " mm (thinning " << sh.max_thinning << " %), margin to the FLC "
             << sh.flc_margin << " %; FLD zones (columns):" << zones << "\n";
-      pcout << (split.split() ? "split: " + what<dim>(split.split_measure(),
-                                                      split.first(),
-                                                      prm.material) +
-                                  " at punch travel " +
-                                  mm(split.first().travel) + ", at " +
-                                  split.first().where()
-                              : std::string("no split"))
+      pcout << (split.split()
+                  ? "split: " +
+                      what<dim>(split.split_measure(),
+                                split.first(),
+                                prm.material) +
+                      " at punch travel " + mm(split.first().travel) + ", at " +
+                      split.first().where()
+                  : std::string("no split"))
             << "\n";
       if (damage.criterion() != parameters::FractureCriterion::none)
         {
@@ -296,8 +297,7 @@ namespace formsolve
                       : std::string("below 1 up to the end of the run"))
                 << " (through-thickness average: "
                 << stroke(summary.through_thickness.stroke)
-                << ", local maximum: " << stroke(summary.local.stroke)
-                << ")\n";
+                << ", local maximum: " << stroke(summary.local.stroke) << ")\n";
         }
       for (const auto &w : run_warnings())
         pcout << "warning: " << w << "\n";
@@ -334,19 +334,19 @@ namespace formsolve
         }
     }
 
-#define INSTANTIATE(dim)                                                  \
-  template RunSummary  TimeLoop<dim>::run(const bool);                    \
-  template void        TimeLoop<dim>::run_steps(RunSummary &);            \
-  template bool        TimeLoop<dim>::checkpoint_due() const;             \
-  template double      TimeLoop<dim>::split_stop_travel() const;          \
-  template void        TimeLoop<dim>::announce_split(                     \
-    const std::vector<SplitMeasure> &);                            \
-  template std::string TimeLoop<dim>::split_reason() const;               \
-  template std::string TimeLoop<dim>::failure_reason(                     \
-    const solver::StepReport &) const;                                    \
-  template void TimeLoop<dim>::finish(RunSummary &);                      \
-  template void TimeLoop<dim>::print_results(const RunSummary &);         \
-  template void TimeLoop<dim>::close_after_error(RunSummary &,            \
+#define INSTANTIATE(dim)                                          \
+  template RunSummary TimeLoop<dim>::run(const bool);             \
+  template void       TimeLoop<dim>::run_steps(RunSummary &);     \
+  template bool       TimeLoop<dim>::checkpoint_due() const;      \
+  template double     TimeLoop<dim>::split_stop_travel() const;   \
+  template void       TimeLoop<dim>::announce_split(              \
+    const std::vector<SplitMeasure> &);                     \
+  template std::string TimeLoop<dim>::split_reason() const;       \
+  template std::string TimeLoop<dim>::failure_reason(             \
+    const solver::StepReport &) const;                            \
+  template void TimeLoop<dim>::finish(RunSummary &);              \
+  template void TimeLoop<dim>::print_results(const RunSummary &); \
+  template void TimeLoop<dim>::close_after_error(RunSummary &,    \
                                                  const std::string &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE

@@ -16,8 +16,8 @@ namespace formsolve
   {
     /// Screen lines ("flow curve: ...", "forming limit: ...").
     std::vector<std::string> material_summary(const parameters::Material &p,
-                                              const RigidViscoplastic &law,
-                                              const DamageCriteria    &damage,
-                                              const double thickness);
+                                              const RigidViscoplastic    &law,
+                                              const DamageCriteria &damage,
+                                              const double          thickness);
   } // namespace material
 } // namespace formsolve

@@ -86,12 +86,12 @@ namespace formsolve
                                 const double              travel,
                                 const double              punch_force);
 
-      parameters::Split                      prm;
-      double                                 t0;
-      std::array<SplitEvent<dim>, 3>         events;
-      double                                 last_margin = 100;
-      double                                 last_travel = 0;
-      double                                 last_force  = 0;
+      parameters::Split              prm;
+      double                         t0;
+      std::array<SplitEvent<dim>, 3> events;
+      double                         last_margin = 100;
+      double                         last_travel = 0;
+      double                         last_force  = 0;
       using Key = typename SheetMeasures<dim>::Key;
       std::map<Key, double> last_thickness; // rank 0, by column
     };
