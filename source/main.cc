@@ -24,6 +24,7 @@ namespace
           const formsolve::parameters::CommandLine &cl)
   {
     formsolve::simulation::TimeLoop<dim> loop(run, prm);
+    int                                  rc = 0;
     try
       {
         if (cl.validate)
@@ -33,9 +34,11 @@ namespace
       }
     catch (const std::exception &e)
       {
-        return formsolve::app::error_exit(formsolve::app::exception_text(e));
+        // Returns only if every rank has the error; else the job ends here.
+        rc = formsolve::app::error_exit(formsolve::app::exception_text(e));
       }
-    return 0;
+    loop.make_report();
+    return rc;
   }
 } // namespace
 

@@ -261,7 +261,7 @@ namespace formsolve
             << std::endl;
       print_results(summary);
       timer.print_summary();
-      make_report();
+      report_due = true;
     }
 
     template <int dim>
@@ -324,7 +324,7 @@ namespace formsolve
           summary.peak_memory_kb          = mem.VmHWM;
           summary.peak_memory_kb_max_rank = mem.VmHWM;
           write_summary(summary);
-          make_report();
+          report_due = true;
         }
       catch (const std::exception &e)
         {

@@ -307,7 +307,8 @@ namespace formsolve
     template <int dim>
     void TimeLoop<dim>::make_report() const
     {
-      if (!prm.output.report || Utilities::MPI::this_mpi_process(comm) != 0)
+      if (!report_due || !prm.output.report ||
+          Utilities::MPI::this_mpi_process(comm) != 0)
         return;
       const std::string &dir  = prm.output.directory;
       const std::string  tool = report_tool();

@@ -3,18 +3,25 @@
 # message naming Time stepping/Minimum time step, and the closing files of
 # the last converged step (here the initial state) written: the VTU,
 # sheet.csv, run-summary.txt whose end_reason says so, and the report
-# (check_report.py reads it).
+# (check_report.py reads it). RANKS=2: the same under mpirun, where the
+# report, made after every rank has met the error, must not cost the job.
 set -uo pipefail
 exe=$1 prm=$2 out=$3
 rm -rf "$out"; mkdir -p "$(dirname "$out")"
 cd "$(dirname "$prm")"
-"$exe" "$prm" --set "Output/Output directory=$out" --set "Output/Output interval=1" \
+launch=("$exe")
+if [ "${RANKS:-1}" -gt 1 ]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+  launch=(timeout 300 mpirun -np "$RANKS" "$exe")
+fi
+"${launch[@]}" "$prm" --set "Output/Output directory=$out" --set "Output/Output interval=1" \
   --set "Time stepping/Minimum time step=0.5" --set "Output/Report=true" > "$out.log" 2> "$out.err"
 rc=$?
 cat "$out.err"
+[ $rc -ne 124 ] || { echo "FAIL: hung"; exit 1; }
+[ "$(grep -c '^formsolve' "$out.err")" -eq 1 ] || { echo "FAIL: not exactly one formsolve message"; exit 1; }
 [ $rc -ne 0 ] || { echo "FAIL: exit status 0"; exit 1; }
 grep -q "Minimum time step" "$out.err" || { echo "FAIL: no message naming the entry"; exit 1; }
-[ "$(grep -c . "$out.err")" -le 3 ] || { echo "FAIL: more than one message"; exit 1; }
 [ -f "$out/solution_00000.pvtu" ] && grep -q solution_00000 "$out/solution.pvd" \
   || { echo "FAIL: the last converged step was not written"; exit 1; }
 [ "$(wc -l < "$out/history.csv")" -eq 1 ] || { echo "FAIL: history.csv should hold the header only"; exit 1; }

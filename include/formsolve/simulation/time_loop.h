@@ -112,6 +112,12 @@ namespace formsolve
       /// Build the mesh and check the initial scene, then stop (--validate).
       void validate_scene();
 
+      /// report/ by scripts/formsolve-report (rank 0; never fails), if the
+      /// run wrote its closing files. Called last, after every rank has
+      /// left run(), also after an error every rank shares: the report
+      /// takes seconds, which a rank waiting in error_exit must not wait.
+      void make_report() const;
+
     private:
       /// The mesh (new, or from the checkpoint), the output folder, the
       /// refinement towards the radii, the first output and the coarse
@@ -201,8 +207,7 @@ namespace formsolve
       postprocess::SplitEvent<dim>
       check_fracture(const postprocess::FormingMeasures<dim> &m,
                      RunSummary                              &summary);
-      /// report/ by scripts/formsolve-report (rank 0; never fails the run).
-      void make_report() const;
+
       /// The time loop's values for a checkpoint, and back (resume).
       Metadata loop_metadata(const RunSummary &summary) const;
       void     restore_loop(const Metadata &meta, RunSummary &summary);
@@ -242,6 +247,7 @@ namespace formsolve
       double to_go           = 0;
       double last_checkpoint = 0;     // wall time of the last checkpoint (s)
       bool   split_said      = false; // the split announced on screen
+      bool   report_due      = false; // the closing files are written
       /// Whether each tool has carried a force yet (a tool that never
       /// does is said at the end).
       std::vector<bool> tool_loaded;
