@@ -6,8 +6,10 @@ run-summary.txt:
   them, and the summary's ear angles within 5 degrees) and the lowest height near 45
   (within 10 degrees), amplitude above 1 mm (measured 3.36 mm), and the
   summary's ears and ear_angles the same;
-- "flat": planar isotropy, the rim flat within 0.1 mm (measured 0.095 mm:
-  the quarter-disk mesh's own waviness) and no ears in the summary.
+- "flat": planar isotropy, the rim flat within 0.3 mm and no ears in the
+  summary. Measured 0.0945 mm: the quarter-disk mesh's own waviness (its
+  cells are not symmetric about 45 degrees), which the limit must leave room
+  for: 3x that, still a tenth of the 3.36 mm ears of "ears".
 Usage: check_earing.py OUT ears|flat"""
 import csv, os, sys
 
@@ -33,7 +35,7 @@ if mode == "ears":
         "at 0, 90, 180, 270 degrees (within 5)": len(angles) == 4 and all(
             min(abs(a - e), 360 - abs(a - e)) <= 5 for a, e in zip(sorted(angles), (0, 90, 180, 270)))})
 else:
-    checks.update({"flat within 0.1 mm": amplitude <= 0.1, "no ears in the summary": summary["ears"] == "0"})
+    checks.update({"flat within 0.3 mm": amplitude <= 0.3, "no ears in the summary": summary["ears"] == "0"})
 print(f"{len(rows)} angles, mean {sum(heights) / len(heights):.3f} mm, amplitude {amplitude:.4f} mm, "
       f"summary: ears {summary.get('ears')} at {summary.get('ear_angles')}")
 for what, good in checks.items():

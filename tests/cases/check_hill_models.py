@@ -3,7 +3,8 @@ one (same short cup, r = 1.8), with the discretisation difference of the two
 models taken out: the quarter-to-axisymmetric punch-force ratio with Hill
 equals that ratio with von Mises (the same meshes) within 1.5 % at every
 travel from 2.5 mm on (measured: 0.73 %), and the thickness strains
-ln(t_min/t0) of the two Hill models agree within 0.02 (measured 0.0013).
+ln(t_min/t0) of the two Hill models agree within 0.0015 (measured 0.0004:
+-0.0159 and -0.0155 at 4.75 mm, `ctest -R hill_quarter_vs_axisymmetric -V`).
 The plain force ratio is 0.979-1.009 (von Mises 0.986-1.013); a 3-D frame
 or law that differs from the axisymmetric one moves the first by far more.
 
@@ -37,5 +38,5 @@ def thickness_strain(r, first):
 t = common[-1]
 eq = thickness_strain(hq[t], hq[min(hq)])
 ea = thickness_strain(ha[t], ha[min(ha)])
-print(f"thickness strain at {t} mm: quarter {eq:.4f}, axisymmetric {ea:.4f} (limit 0.02)")
-sys.exit(0 if worst <= 1.5e-2 and abs(eq - ea) <= 0.02 else 1)
+print(f"thickness strain at {t} mm: quarter {eq:.4f}, axisymmetric {ea:.4f} (limit 0.0015)")
+sys.exit(0 if worst <= 1.5e-2 and abs(eq - ea) <= 0.0015 else 1)

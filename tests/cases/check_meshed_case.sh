@@ -4,8 +4,9 @@
 # its analytic tools and with meshed copies (meshes/tools/make-tools.sh
 # TOOLSET; STL, or .msh profiles for cup-profile) at each facet size of
 # SIZES ("2 1 0.5"); ARGS are further --set
-# options for every run. COMPARE (a .py beside this script) then compares
-# OUTDIR/analytic with OUTDIR/meshed-<size>.
+# options for every run. COMPARE (a .py beside this script, with its own
+# arguments after OUTDIR in the same word: "compare_meshed_cup.py 0.015")
+# then compares OUTDIR/analytic with OUTDIR/meshed-<size>.
 set -euo pipefail
 exe=$1 tools=$2 out=$3 python=$4 prm=$5 toolset=$6 sizes=$7 compare=$8
 shift 8
@@ -33,4 +34,5 @@ for size in $sizes; do
   done
   run "meshed-$size" "${settings[@]}" "$@"
 done
-exec "$python" "$here/$compare" "$out"
+read -r -a compare_args <<< "$compare"
+exec "$python" "$here/${compare_args[0]}" "$out" "${compare_args[@]:1}"
