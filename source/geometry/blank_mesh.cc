@@ -6,9 +6,12 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 
+#include <formsolve/app/gmsh_session.h>
+#include <formsolve/app/rank_zero.h>
 #include <formsolve/geometry/blank_mesh.h>
 #include <formsolve/model/dimensions.h>
 
+#include <gmsh.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -16,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <sstream>
 
 namespace formsolve
 {
@@ -27,36 +31,49 @@ namespace formsolve
 
     namespace
     {
-      void read_planform(const std::string &file, Triangulation<2> &planform)
+      /// The text of a 2-D quadrilateral mesh in gmsh's format 2: the file,
+      /// or a .geo meshed by the gmsh library (quadrilaterals by
+      /// recombination and subdivision).
+      std::string planform_text(const std::string &file)
       {
         AssertThrow(std::ifstream(file).good(),
                     ExcMessage("Geometry/Mesh file: cannot open '" + file +
                                "'"));
-        std::string msh = file;
-        const auto  ext = std::filesystem::path(file).extension().string();
-        if (ext == ".geo")
+        const auto ext = std::filesystem::path(file).extension().string();
+        AssertThrow(ext == ".geo" || ext == ".msh",
+                    ExcMessage("Geometry/Mesh file: '" + file +
+                               "' is neither .msh nor .geo"));
+        std::ostringstream text;
+        if (ext == ".msh")
           {
-            // Mesh the geometry with the gmsh executable deal.II was built
-            // with.
-            msh = (std::filesystem::temp_directory_path() /
-                   ("formsolve-" + std::to_string(::getpid()) + ".msh"))
-                    .string();
-            const std::string cmd =
-              std::string(DEAL_II_GMSH_EXECUTABLE_PATH) +
-              " -2 -format msh2 -v 0 -setnumber Mesh.RecombineAll 1 "
-              "-setnumber Mesh.SubdivisionAlgorithm 1 '" +
-              file + "' -o '" + msh + "' > /dev/null 2>&1";
-            AssertThrow(std::system(cmd.c_str()) == 0 &&
-                          std::ifstream(msh).good(),
-                        ExcMessage("Geometry/Mesh file: gmsh could not mesh '" +
-                                   file + "'"));
+            text << std::ifstream(file).rdbuf();
+            return text.str();
           }
-        else
-          AssertThrow(ext == ".msh",
-                      ExcMessage("Geometry/Mesh file: '" + file +
-                                 "' is neither .msh nor .geo"));
-        GridIn<2>     in(planform);
-        std::ifstream input(msh);
+        const auto msh = std::filesystem::temp_directory_path() /
+                         ("formsolve-" + std::to_string(::getpid()) + ".msh");
+        {
+          const app::GmshSession gmsh_session;
+          gmsh_session.checked("Geometry/Mesh file:", file, "meshing", [&] {
+            gmsh::option::setNumber("Mesh.RecombineAll", 1);
+            gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
+            gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
+            gmsh::open(file);
+            gmsh::model::mesh::generate(2);
+            gmsh::write(msh.string());
+          });
+        }
+        text << std::ifstream(msh).rdbuf();
+        std::filesystem::remove(msh);
+        return text.str();
+      }
+
+      void read_planform(const std::string &file, Triangulation<2> &planform)
+      {
+        // Rank 0 meshes (gmsh takes its time), every rank reads the text.
+        std::istringstream input(
+          app::on_rank_zero<std::string>(MPI_COMM_WORLD,
+                                         [&] { return planform_text(file); }));
+        GridIn<2> in(planform);
         try
           {
             in.read_msh(input);
@@ -71,8 +88,6 @@ namespace formsolve
                       planform.all_reference_cells_are_hyper_cube(),
                     ExcMessage("Geometry/Mesh file: '" + file +
                                "' must be a 2-D mesh of quadrilaterals only"));
-        if (msh != file)
-          std::filesystem::remove(msh);
       }
 
       /// The planform of the modelled part: quarter x, y >= 0; half x >= 0.

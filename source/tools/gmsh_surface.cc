@@ -2,6 +2,7 @@
 // meshes with OpenCASCADE; and the lines of an axisymmetric tool's profile.
 #include <deal.II/base/exceptions.h>
 
+#include <formsolve/app/gmsh_session.h>
 #include <formsolve/tools/profile_file.h>
 #include <formsolve/tools/surface_file.h>
 
@@ -17,49 +18,17 @@ namespace formsolve
   {
     using namespace dealii;
 
-    namespace
-    {
-      /// gmsh's session for one file; finalized however the reading ends.
-      struct GmshSession
-      {
-        GmshSession()
-        {
-          gmsh::initialize(0, nullptr, false);
-          gmsh::option::setNumber("General.Terminal", 0);
-        }
-        ~GmshSession() { gmsh::finalize(); }
-      };
-
-      /// Calls @p f, turning gmsh's exceptions into an error naming @p file.
-      template <typename F>
-      void
-      gmsh_checked(const std::string &file, const std::string &doing, F &&f)
-      {
-        std::string error;
-        try
-          {
-            f();
-            return;
-          }
-        catch (...)
-          {
-            gmsh::logger::getLastError(error);
-          }
-        AssertThrow(false,
-                    ExcMessage("tool surface file '" + file + "': gmsh " +
-                               doing + " failed: " + error));
-      }
-    } // namespace
-
     SurfaceMesh read_with_gmsh(const std::string &file, const double facet_size)
     {
       AssertThrow(std::filesystem::is_regular_file(file),
                   ExcMessage("tool surface file '" + file + "': no such file"));
-      const bool  is_mesh = std::filesystem::path(file).extension() == ".msh";
-      GmshSession session;
-      gmsh_checked(file, "reading", [&] { gmsh::open(file); });
+      const bool is_mesh = std::filesystem::path(file).extension() == ".msh";
+      const app::GmshSession session;
+      session.checked("tool surface file", file, "reading", [&] {
+        gmsh::open(file);
+      });
       if (!is_mesh)
-        gmsh_checked(file, "meshing the surfaces", [&] {
+        session.checked("tool surface file", file, "meshing the surfaces", [&] {
           gmsh::option::setNumber("Mesh.MeshSizeMax", facet_size);
           gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1 * facet_size);
           gmsh::model::mesh::generate(2);
@@ -69,7 +38,7 @@ namespace formsolve
       std::map<std::size_t, unsigned int> index;
       std::vector<std::size_t>            tags, elements, nodes;
       std::vector<double>                 coordinates, parametric;
-      gmsh_checked(file, "reading the nodes", [&] {
+      session.checked("tool surface file", file, "reading the nodes", [&] {
         gmsh::model::mesh::getNodes(tags,
                                     coordinates,
                                     parametric,
@@ -103,9 +72,14 @@ namespace formsolve
           // gmsh 4.8 leaves the vectors as they were for a type it lacks.
           elements.clear();
           nodes.clear();
-          gmsh_checked(file, "reading the elements", [&, type = type] {
-            gmsh::model::mesh::getElementsByType(type, elements, nodes);
-          });
+          session.checked("tool surface file",
+                          file,
+                          "reading the elements",
+                          [&, type = type] {
+                            gmsh::model::mesh::getElementsByType(type,
+                                                                 elements,
+                                                                 nodes);
+                          });
           for (std::size_t e = 0; e + stride <= nodes.size(); e += stride)
             {
               const unsigned int a = vertex(nodes[e]), b = vertex(nodes[e + 1]),
@@ -127,18 +101,20 @@ namespace formsolve
     {
       AssertThrow(std::filesystem::is_regular_file(file),
                   ExcMessage("tool profile file '" + file + "': no such file"));
-      const bool  is_mesh = std::filesystem::path(file).extension() == ".msh";
-      GmshSession session;
-      gmsh_checked(file, "reading", [&] { gmsh::open(file); });
+      const bool is_mesh = std::filesystem::path(file).extension() == ".msh";
+      const app::GmshSession session;
+      session.checked("tool profile file", file, "reading", [&] {
+        gmsh::open(file);
+      });
       if (!is_mesh)
-        gmsh_checked(file, "meshing the curves", [&] {
+        session.checked("tool profile file", file, "meshing the curves", [&] {
           gmsh::option::setNumber("Mesh.MeshSizeMax", facet_size);
           gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1 * facet_size);
           gmsh::model::mesh::generate(1);
         });
       std::vector<std::size_t> tags, elements, nodes;
       std::vector<double>      x, parametric;
-      gmsh_checked(file, "reading the nodes", [&] {
+      session.checked("tool profile file", file, "reading the nodes", [&] {
         gmsh::model::mesh::getNodes(tags, x, parametric, -1, -1, false, false);
       });
       // The plane the profile is drawn in: y = 0 (x-z) or z = 0 (x-y).
@@ -164,9 +140,14 @@ namespace formsolve
         {
           elements.clear();
           nodes.clear();
-          gmsh_checked(file, "reading the elements", [&, type = type] {
-            gmsh::model::mesh::getElementsByType(type, elements, nodes);
-          });
+          session.checked("tool profile file",
+                          file,
+                          "reading the elements",
+                          [&, type = type] {
+                            gmsh::model::mesh::getElementsByType(type,
+                                                                 elements,
+                                                                 nodes);
+                          });
           for (std::size_t e = 0; e + stride <= nodes.size(); e += stride)
             {
               const auto a = index.find(nodes[e]), b = index.find(nodes[e + 1]);

@@ -1,3 +1,4 @@
+#include <formsolve/app/rank_zero.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/tools/mesh_tool.h>
 #include <formsolve/tools/polyline_tool.h>
@@ -53,9 +54,15 @@ namespace formsolve
             for (unsigned int c = 0; c < 3; ++c)
               shift[c] = t.mesh_offset[c];
             shift[2] += side * t.gap;
-            std::string note;
-            const auto  mesh =
-              load_tool_mesh(t.mesh_file, t.facet_size, shift, note);
+            // Rank 0 reads (and meshes) the file, every rank gets it.
+            const auto [mesh, note] =
+              app::on_rank_zero<std::pair<SurfaceMesh, std::string>>(
+                MPI_COMM_WORLD,
+                [&] {
+                  std::string n;
+                  auto m = load_tool_mesh(t.mesh_file, t.facet_size, shift, n);
+                  return std::make_pair(std::move(m), n);
+                });
             double size = 0;
             for (const auto &x : mesh.vertices)
               size = std::max(size, (x - mesh.vertices[0]).norm());
@@ -103,7 +110,9 @@ namespace formsolve
         const std::string entry = "Tools/" + t.name + "/Mesh file: ";
         try
           {
-            auto lines = read_profile(t.mesh_file, t.facet_size);
+            auto lines = app::on_rank_zero<ProfileLines>(MPI_COMM_WORLD, [&] {
+              return read_profile(t.mesh_file, t.facet_size);
+            });
             for (auto &x : lines.points)
               x[1] += t.mesh_offset[2] + side * t.gap;
             auto tool = std::make_unique<PolylineTool>(t.name,

@@ -18,6 +18,13 @@ namespace formsolve
     {
       std::vector<dealii::Point<2>>            points;
       std::vector<std::array<unsigned int, 2>> segments;
+
+      /// For the broadcast from the rank that read it.
+      template <class Archive>
+      void serialize(Archive &archive, const unsigned int)
+      {
+        archive &points &segments;
+      }
     };
 
     /// A CSV of r, z (mm), one point per line in the profile's order; lines

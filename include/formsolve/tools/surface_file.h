@@ -21,6 +21,13 @@ namespace formsolve
     {
       std::vector<Point<3>>                    vertices;
       std::vector<std::array<unsigned int, 3>> triangles;
+
+      /// For the broadcast from the rank that read it.
+      template <class Archive>
+      void serialize(Archive &archive, const unsigned int)
+      {
+        archive &vertices &triangles;
+      }
     };
 
     /// The surface of an STL file (ASCII or binary; CGAL's reader, which
