@@ -176,25 +176,5 @@ namespace formsolve
                        (uniaxial(angle) * (P * uniaxial(angle))));
     }
 
-    SymmetricTensor<4, 3> rotated(const SymmetricTensor<4, 3> &T,
-                                  const Tensor<2, 3>          &R)
-    {
-      SymmetricTensor<4, 3> out;
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = i; j < 3; ++j)
-          for (unsigned int k = 0; k < 3; ++k)
-            for (unsigned int l = k; l < 3; ++l)
-              {
-                double v = 0;
-                for (unsigned int a = 0; a < 3; ++a)
-                  for (unsigned int b = 0; b < 3; ++b)
-                    for (unsigned int c = 0; c < 3; ++c)
-                      for (unsigned int e = 0; e < 3; ++e)
-                        v +=
-                          R[i][a] * R[j][b] * R[k][c] * R[l][e] * T[a][b][c][e];
-                out[i][j][k][l] = v;
-              }
-      return out;
-    }
   } // namespace material
 } // namespace formsolve

@@ -12,17 +12,9 @@ namespace formsolve
     template <int dim>
     Tensor<2, dim> polar_rotation(const Tensor<2, dim> &F)
     {
-      Tensor<2, dim> X = F;
-      for (unsigned int k = 0; k < 50; ++k)
-        {
-          const double   z      = std::pow(std::abs(determinant(X)), -1. / dim);
-          Tensor<2, dim> next   = 0.5 * (z * X + transpose(invert(X)) / z);
-          const double   change = (next - X).norm();
-          X                     = next;
-          if (change < 1e-14 * std::sqrt(double(dim)))
-            break;
-        }
-      return X;
+      // The orthogonal tensor nearest F (deal.II's, through its SVD) is the
+      // rotation of F = R U for det F > 0.
+      return project_onto_orthogonal_tensors(F);
     }
 
     template <int dim>

@@ -8,6 +8,8 @@
 // - normal anisotropy: eps_bar_dot^2 of in-plane principal rates is
 //   (1+r)/(1+2r) [(1+r)(e1^2 + e2^2) + 2 r e1 e2];
 // - a metric rotated with the material gives the same equivalent rate.
+#include <deal.II/physics/transformations.h>
+
 #include <formsolve/material/hill48.h>
 
 #include "check.h"
@@ -124,7 +126,8 @@ int main()
       const Tensor<2, 3> R  = Rz * Rx;
       const auto         D  = some_deviator(0.3);
       const auto         Dc = symmetrize(R * Tensor<2, 3>(D) * transpose(R));
-      const auto         Qc = formsolve::material::rotated(h.dual(), R);
+      const auto         Qc =
+        dealii::Physics::Transformations::basis_transformation(h.dual(), R);
       test::close(name + ": rotated with the material",
                   Dc * (Qc * Dc),
                   D * (h.dual() * D),

@@ -78,11 +78,5 @@ namespace formsolve
       double stress_ratio(const double angle) const;
     };
 
-    /// T_ijkl = R_ia R_jb R_kc R_ld T_abcd: a metric of the frame whose axes
-    /// are the columns of @p R (RD, TD, ND in current coordinates) in the
-    /// current frame.
-    dealii::SymmetricTensor<4, 3>
-    rotated(const dealii::SymmetricTensor<4, 3> &T,
-            const dealii::Tensor<2, 3>          &R);
   } // namespace material
 } // namespace formsolve
