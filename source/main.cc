@@ -77,23 +77,26 @@ int main(int argc, char **argv)
             std::cout << CommandLine::usage();
           return 0;
         }
-      ParameterHandler prm;
-      formsolve::parameters::Run::declare(prm);
+      ParameterHandler                    prm;
+      formsolve::parameters::Run          parameters;
+      formsolve::parameters::Declarations declarations(prm);
+      parameters.declare(declarations);
       if (cl.print_parameters || cl.parameter_manual)
         {
           if (root && cl.print_parameters)
-            formsolve::parameters::write_parameter_file(prm, std::cout);
+            formsolve::parameters::write_parameter_file(declarations.tree(),
+                                                        std::cout);
           else if (root)
             {
               // One additional tool shows the entries each of them has.
-              formsolve::parameters::Tools::declare_additional(prm, {"<name>"});
-              formsolve::parameters::write_manual(prm, std::cout);
+              parameters.tools.declare_additional(declarations, {"<name>"});
+              formsolve::parameters::write_manual(declarations.tree(),
+                                                  std::cout);
             }
           return 0;
         }
-      formsolve::parameters::read_input(prm, cl);
-      formsolve::parameters::Run parameters;
-      parameters.parse(prm);
+      formsolve::parameters::read_input(declarations, parameters.tools, cl);
+      parameters.complete();
       parameters.validate();
       if (root)
         {

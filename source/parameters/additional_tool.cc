@@ -1,7 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <formsolve/parameters/additional_tool.h>
-#include <formsolve/parameters/choice.h>
+#include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/require.h>
 
 #include <cmath>
@@ -10,92 +10,71 @@ namespace formsolve
 {
   namespace parameters
   {
-    using namespace dealii::Patterns;
-
     namespace
     {
       const Choice<ToolMotion> motion_names{{"fixed", ToolMotion::fixed},
                                             {"prescribed",
                                              ToolMotion::prescribed},
                                             {"force", ToolMotion::force}};
+      const Choice<bool>       side_names{{"above", true}, {"below", false}};
+      const Choice<bool> solid_names{{"inside", true}, {"outside", false}};
     } // namespace
 
-    void AdditionalTool::declare(ParameterHandler &prm, const std::string &n)
+    void AdditionalTool::declare(Declarations &d)
     {
-      prm.enter_subsection(n);
-      AdditionalTool d;
-      d.shape = ToolShape::flat;
-      Tool::declare(prm, d);
-      prm.declare_entry("Side",
-                        "above",
-                        Selection("above|below"),
-                        "The side of the sheet the tool works on: above "
-                        "(its face at z = thickness + Gap) or below (at z = "
-                        "-Gap).");
-      prm.declare_entry(
-        "Solid",
-        "inside",
-        Selection("inside|outside"),
-        "Round and rounded rectangle: the tool's solid lies inside its "
-        "outline (a punch, a pad) or outside it (a ring around an opening, "
-        "as the die and the blank holder); the Profile radius rounds the "
-        "outline's edge.");
-      prm.declare_entry(
+      Tool::declare(d);
+      d.add("Side",
+            above,
+            side_names,
+            "The side of the sheet the tool works on: above (its face at z = "
+            "thickness + Gap) or below (at z = -Gap).");
+      d.add("Solid",
+            solid_inside,
+            solid_names,
+            "Round and rounded rectangle: the tool's solid lies inside its "
+            "outline (a punch, a pad) or outside it (a ring around an "
+            "opening, as the die and the blank holder); the Profile radius "
+            "rounds the outline's edge.");
+      d.add(
         "Motion",
-        "fixed",
-        Selection(motion_names.pattern()),
+        motion,
+        motion_names,
         "fixed: the tool stays where it starts. prescribed: it moves at "
         "Speed along Direction, for the whole run or until it has "
         "travelled Stroke. force: it moves along Direction so that the "
         "force it exerts on the sheet along Direction equals Force in every "
         "step (solved with the velocities, as the blank holder's).");
-      prm.declare_entry("Direction",
-                        "0, 0, -1",
-                        List(Double(), 3, 3, ","),
-                        "x, y, z of the direction of motion (prescribed) or "
-                        "of the force on the sheet (force); made unit "
-                        "length. An axisymmetric model takes only z; a "
-                        "symmetry plane, no component normal to it.");
-      prm.declare_entry("Speed",
-                        str(d.speed),
-                        Double(0),
-                        "Motion = prescribed: speed along Direction (mm/s).");
-      prm.declare_entry("Stroke",
-                        str(d.stroke),
-                        Double(0),
-                        "Motion = prescribed: the tool stops after this "
-                        "travel (mm), landing on it exactly; 0: it moves "
-                        "for the whole run.");
-      prm.declare_entry("Force",
-                        str(d.force),
-                        Double(0),
-                        "Motion = force: the force the tool exerts on the "
-                        "sheet along Direction (N, > 0), for the full part "
-                        "(the model's share is taken by the symmetry "
-                        "factor).");
-      prm.declare_entry("Refinement level",
-                        "0",
-                        Integer(0, 10),
-                        "Extra refinement levels of the sheet near the "
-                        "tool's radii, as Mesh refinement/Punch level for "
-                        "the punch (0: none).");
-      prm.leave_subsection();
+      d.add("Direction",
+            direction,
+            numbers("-", 3, 3),
+            "x, y, z of the direction of motion (prescribed) or of the force "
+            "on the sheet (force); made unit length. An axisymmetric model "
+            "takes only z; a symmetry plane, no component normal to it.");
+      d.add("Speed",
+            speed,
+            number("mm/s", 0),
+            "Motion = prescribed: speed along Direction (mm/s).");
+      d.add("Stroke",
+            stroke,
+            number("mm", 0),
+            "Motion = prescribed: the tool stops after this "
+            "travel (mm), landing on it exactly; 0: it moves "
+            "for the whole run.");
+      d.add("Force",
+            force,
+            number("N", 0),
+            "Motion = force: the force the tool exerts on the "
+            "sheet along Direction (N, > 0), for the full part "
+            "(the model's share is taken by the symmetry "
+            "factor).");
+      d.add("Refinement level",
+            refinement_level,
+            whole_number(0, 10),
+            "Extra refinement levels of the sheet near the "
+            "tool's radii, as Mesh refinement/Punch level for "
+            "the punch (0: none).");
     }
 
-    void AdditionalTool::parse(ParameterHandler &prm)
-    {
-      Tool::parse(prm);
-      above        = prm.get("Side") == "above";
-      solid_inside = prm.get("Solid") == "inside";
-      motion       = motion_names.parse(prm.get("Motion"));
-      const auto d = dealii::Utilities::split_string_list(prm.get("Direction"));
-      for (unsigned int c = 0; c < 3; ++c)
-        direction[c] = dealii::Utilities::string_to_double(d[c]);
-      speed            = prm.get_double("Speed");
-      stroke           = prm.get_double("Stroke");
-      force            = prm.get_double("Force");
-      refinement_level = prm.get_integer("Refinement level");
-    }
 
     void AdditionalTool::validate(const bool axisymmetric,
                                   const bool symmetric_x,
@@ -131,9 +110,9 @@ namespace formsolve
       const std::string                                      &text,
       const std::vector<std::pair<std::string, std::string>> &overrides)
     {
-      ParameterHandler prm;
+      dealii::ParameterHandler prm;
       prm.enter_subsection("Tools");
-      prm.declare_entry("Additional tools", "", Anything());
+      prm.declare_entry("Additional tools", "", dealii::Patterns::Anything());
       prm.leave_subsection();
       try
         {

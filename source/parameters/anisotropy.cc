@@ -1,7 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <formsolve/parameters/anisotropy.h>
-#include <formsolve/parameters/choice.h>
+#include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/require.h>
 
 #include <cmath>
@@ -11,8 +11,6 @@ namespace formsolve
 {
   namespace parameters
   {
-    using namespace dealii::Patterns;
-
     namespace
     {
       const Choice<YieldCriterion> criterion_names{
@@ -27,12 +25,6 @@ namespace formsolve
       const Choice<DamageNormalisation> normalisation_names{
         {"normal anisotropy", DamageNormalisation::normal_anisotropy},
         {"rolling direction", DamageNormalisation::rolling_direction}};
-
-      std::vector<double> numbers(const std::string &list)
-      {
-        return dealii::Utilities::string_to_double(
-          dealii::Utilities::split_string_list(list, ','));
-      }
 
       std::string joined(const std::vector<double> &v)
       {
@@ -66,78 +58,64 @@ namespace formsolve
                                               : "");
     }
 
-    void Anisotropy::declare(dealii::ParameterHandler &prm)
+    void Anisotropy::declare(Declarations &d)
     {
-      prm.declare_entry(
-        "Yield criterion",
-        "von Mises",
-        Selection(criterion_names.pattern()),
-        "von Mises, or Hill's 1948 quadratic anisotropy normalised so that "
-        "the flow stress is the rolling direction's uniaxial one (G + H = "
-        "1: a flow curve from an RD tensile test is used as it is).");
-      prm.declare_entry(
+      d.add("Yield criterion",
+            criterion,
+            criterion_names,
+            "von Mises, or Hill's 1948 quadratic anisotropy normalised so that "
+            "the flow stress is the rolling direction's uniaxial one (G + H = "
+            "1: a flow curve from an RD tensile test is used as it is).");
+      d.add(
         "Hill calibration",
-        "r-values",
-        Selection(calibration_names.pattern()),
+        calibration,
+        calibration_names,
         "How Hill48's coefficients are found: from the R-values, or from the "
         "Yield stress ratios. Hill48 cannot match both for most alloys; the "
         "run summary prints F, G, H, L, M, N and the r-values and stress "
         "ratios at 0, 45 and 90 degrees that follow.");
-      prm.declare_entry(
+      d.add(
         "R-values",
-        "1",
-        List(Double(), 1, 3),
+        r_values,
+        numbers("-", 1, 3),
         "Lankford coefficients (width over thickness strain of a tensile "
         "test, -): one normal r, or r0, r45, r90 (0, 45, 90 degrees to the "
         "rolling direction). Planar data (not all equal) need a 3-D model.");
-      prm.declare_entry(
-        "Yield stress ratios",
-        "",
-        List(Double(), 0, 3),
-        "sigma45/sigma0, sigma90/sigma0 and optionally sigma_b/sigma0 "
-        "(uniaxial flow stresses at 45 and 90 degrees to the rolling "
-        "direction and the balanced-biaxial one, over the RD flow stress, "
-        "-); without sigma_b/sigma0 it is taken as 1 (balanced biaxial, "
-        "equivalently through-thickness, as strong as RD), and the summary "
-        "says so. For Hill calibration = yield stresses.");
-      prm.declare_entry(
+      d.add("Yield stress ratios",
+            yield_stress_ratios,
+            numbers("-", 0, 3),
+            "sigma45/sigma0, sigma90/sigma0 and optionally sigma_b/sigma0 "
+            "(uniaxial flow stresses at 45 and 90 degrees to the rolling "
+            "direction and the balanced-biaxial one, over the RD flow stress, "
+            "-); without sigma_b/sigma0 it is taken as 1 (balanced biaxial, "
+            "equivalently through-thickness, as strong as RD), and the summary "
+            "says so. For Hill calibration = yield stresses.");
+      d.add(
         "Transverse shear",
-        "equal to N",
-        Selection(shear_names.pattern()),
+        transverse_shear,
+        shear_names,
         "Hill's L and M (shear in the planes through the normal), which "
         "in-plane tests do not fix: equal to N (the common choice; transverse "
         "isotropy about the normal either way) or isotropic (3/2, von "
         "Mises's). They matter only where the sheet is sheared through its "
         "thickness, over tool radii.");
-      prm.declare_entry("Rolling direction",
-                        "0",
-                        Double(-360, 360),
-                        "Angle of the rolling direction from the x axis in "
-                        "the sheet plane (degrees), 3-D models.");
-      prm.declare_entry(
-        "Fracture constants normalisation",
-        "normal anisotropy",
-        Selection(normalisation_names.pattern()),
-        "The equivalent stress and strain Oyane a, b and the Cockcroft-"
-        "Latham critical value were calibrated in. normal anisotropy: "
-        "Hill's sigma_bar^2 = 3/(2(2+r)) [r(s1-s2)^2 + (s2-s3)^2 + "
-        "(s3-s1)^2] (the reference materials' constants), converted to "
-        "formsolve's with k = sqrt(2(2+r)/(3(1+r))): a/k, b/k^2, C/k "
-        "(r the mean r-value; no change for von Mises). rolling direction: "
-        "formsolve's own (G + H = 1), used as given.");
+      d.add("Rolling direction",
+            rolling_direction,
+            number("degrees", -360, 360),
+            "Angle of the rolling direction from the x axis in "
+            "the sheet plane (degrees), 3-D models.");
+      d.add("Fracture constants normalisation",
+            damage_normalisation,
+            normalisation_names,
+            "The equivalent stress and strain Oyane a, b and the Cockcroft-"
+            "Latham critical value were calibrated in. normal anisotropy: "
+            "Hill's sigma_bar^2 = 3/(2(2+r)) [r(s1-s2)^2 + (s2-s3)^2 + "
+            "(s3-s1)^2] (the reference materials' constants), converted to "
+            "formsolve's with k = sqrt(2(2+r)/(3(1+r))): a/k, b/k^2, C/k "
+            "(r the mean r-value; no change for von Mises). rolling direction: "
+            "formsolve's own (G + H = 1), used as given.");
     }
 
-    void Anisotropy::parse(dealii::ParameterHandler &prm)
-    {
-      criterion   = criterion_names.parse(prm.get("Yield criterion"));
-      calibration = calibration_names.parse(prm.get("Hill calibration"));
-      r_values    = numbers(prm.get("R-values"));
-      yield_stress_ratios = numbers(prm.get("Yield stress ratios"));
-      transverse_shear    = shear_names.parse(prm.get("Transverse shear"));
-      rolling_direction   = prm.get_double("Rolling direction");
-      damage_normalisation =
-        normalisation_names.parse(prm.get("Fracture constants normalisation"));
-    }
 
     void Anisotropy::validate() const
     {

@@ -175,15 +175,17 @@ namespace formsolve
                               std::set<std::string> &names)
       {
         for (const auto &[name, entry] : s.entries)
-          if (entry.pattern.find("FileName") != std::string::npos)
+          if (entry.accepts.names_input_file)
             names.insert(name);
         for (const auto &[name, section] : s.sections)
           input_file_entries(section, names);
       }
     } // namespace
 
-    void read_input(dealii::ParameterHandler &prm, const CommandLine &cl)
+    void
+    read_input(Declarations &declarations, Tools &tools, const CommandLine &cl)
     {
+      dealii::ParameterHandler &prm = declarations.handler();
       {
         std::ifstream in(cl.input_file);
         AssertThrow(in.good(),
@@ -195,7 +197,7 @@ namespace formsolve
       // (pattern FileName) alike. The output directory and --set values
       // stay relative to the working directory.
       std::set<std::string> paths;
-      input_file_entries(declared(prm), paths);
+      input_file_entries(declarations.tree(), paths);
       std::vector<SourceLine> lines;
       expand_includes(std::filesystem::absolute(cl.input_file),
                       0,
@@ -205,14 +207,19 @@ namespace formsolve
       for (const auto &l : lines)
         text += l.text + '\n';
       // The additional tools' subsections exist once their names are known.
-      Tools::declare_additional(prm, additional_tool_names(text, cl.overrides));
-      const DeclaredSection tree = declared(prm);
+      tools.declare_additional(declarations,
+                               additional_tool_names(text, cl.overrides));
+      const DeclaredSection &tree = declarations.tree();
       check_input(tree, lines);
       try
         {
           prm.parse_input_from_string(text,
                                       cl.input_file,
                                       /*skip_undefined=*/false);
+        }
+      catch (const dealii::StandardExceptions::ExcMessage &)
+        {
+          throw; // an entry's own reading, which names it
         }
       catch (const dealii::ExceptionBase &e)
         {
@@ -234,6 +241,10 @@ namespace formsolve
               prm.set(entry, value);
               for (unsigned int k = 0; k < parts.size(); ++k)
                 prm.leave_subsection();
+            }
+          catch (const dealii::StandardExceptions::ExcMessage &)
+            {
+              throw; // an entry's own reading, which names it
             }
           catch (const dealii::ExceptionBase &e)
             {

@@ -1,14 +1,12 @@
-#include <formsolve/parameters/choice.h>
 #include <formsolve/parameters/choices.h>
 #include <formsolve/parameters/contact.h>
+#include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/require.h>
 
 namespace formsolve
 {
   namespace parameters
   {
-    using namespace dealii::Patterns;
-
     namespace
     {
       const Choice<AdaptiveEstimate> estimate_names{
@@ -20,22 +18,21 @@ namespace formsolve
         {"step", FactorUpdate::step}};
     } // namespace
 
-    void Contact::declare(ParameterHandler &prm)
+    void Contact::declare(Declarations &d)
     {
-      prm.enter_subsection("Contact");
-      declare_strategy(prm);
-      declare_adaptive(prm);
-      declare_passes(prm);
-      prm.leave_subsection();
+      const Subsection s(d, "Contact");
+      declare_strategy(d);
+      declare_adaptive(d);
+      declare_passes(d);
     }
 
     /// The strategy and the penetration it aims at or bounds.
-    void Contact::declare_strategy(ParameterHandler &prm)
+    void Contact::declare_strategy(Declarations &d)
     {
-      prm.declare_entry(
+      d.add(
         "Penalty strategy",
-        "adaptive-strict",
-        Selection(choices("Contact/Penalty strategy")),
+        penalty_strategy,
+        one_of(choices("Contact/Penalty strategy")),
         "How penalty factors are chosen. fixed: 'Penalty factor' (or the "
         "tool's own) times the nodal contact area. adaptive: per contact "
         "pair and Newton iteration from the current system, so that the "
@@ -45,42 +42,40 @@ namespace formsolve
         "augmented-lagrangian: Uzawa updates of a multiplier per pair on "
         "the factors of 'Augmented Lagrangian penalty', the step re-solved "
         "until no node is deeper than 'Allowed penetration'.");
-      prm.declare_entry(
-        "Augmented Lagrangian penalty",
-        "fixed",
-        Selection("fixed|adaptive"),
-        "augmented-lagrangian: the factors the Uzawa updates run on, "
-        "fixed ('Penalty factor') or adaptive (as strategy adaptive).");
-      prm.declare_entry(
-        "Penalty factor",
-        "1e5",
-        Double(),
-        "Fixed penalty (N/mm^3): contact pressure per mm of "
-        "penetration. Each node gets this times its contact area; the "
-        "adaptive strategies start from it.");
-      prm.declare_entry("Allowed penetration",
-                        "1e-3",
-                        Double(),
-                        "delta (mm): penetration the adaptive strategies aim "
-                        "at (adaptive) or bound (adaptive-strict).");
+      d.add("Augmented Lagrangian penalty",
+            al_penalty,
+            one_of("fixed|adaptive"),
+            "augmented-lagrangian: the factors the Uzawa updates run on, "
+            "fixed ('Penalty factor') or adaptive (as strategy adaptive).");
+      d.add("Penalty factor",
+            penalty_factor,
+            number("N/mm^3"),
+            "Fixed penalty (N/mm^3): contact pressure per mm of "
+            "penetration. Each node gets this times its contact area; the "
+            "adaptive strategies start from it.");
+      d.add("Allowed penetration",
+            allowed_penetration,
+            number("mm"),
+            "delta (mm): penetration the adaptive strategies aim "
+            "at (adaptive) or bound (adaptive-strict).");
     }
 
     /// The estimate of the adaptive factors.
-    void Contact::declare_adaptive(ParameterHandler &prm)
+    void Contact::declare_adaptive(Declarations &d)
     {
-      prm.declare_entry("Lower bound",
-                        "1e-3",
-                        Double(0),
-                        "Adaptive: eps_k >= this * K_kk/dt, K_kk the tangent "
-                        "diagonal of the node along the tool normal (-).");
-      prm.declare_entry("Upper bound",
-                        "1e4",
-                        Double(0),
-                        "Adaptive: eps_k <= this * K_kk/dt (-).");
-      prm.declare_entry(
+      d.add("Lower bound",
+            lower_bound,
+            number("-", 0),
+            "Adaptive: eps_k >= this * K_kk/dt, K_kk the tangent "
+            "diagonal of the node along the tool normal (-).");
+      d.add("Upper bound",
+            upper_bound,
+            number("-", 0),
+            "Adaptive: eps_k <= this * K_kk/dt (-).");
+      d.add(
         "Adaptive estimate",
-        "force",
-        Selection(estimate_names.pattern()),
+        adaptive_estimate,
+        estimate_names,
         "projection: eps_k = n.(r + K dv)_k / delta, the published method "
         "with the node moved to penetration delta (dv) through the tangent "
         "K; force: its limit dv -> 0, eps_k = n.r_k / delta, the normal "
@@ -88,34 +83,31 @@ namespace formsolve
         "the tangent of rigid zones is a cutoff viscosity, not a stiffness, "
         "and projection overestimates by orders of magnitude "
         "(doc/contact.md).");
-      prm.declare_entry(
+      d.add(
         "Target fraction",
-        "0.9",
-        Double(0.01, 1),
+        target_fraction,
+        number("-", 0.01, 1),
         "Adaptive estimates aim at this fraction of 'Allowed penetration' "
         "(-). Below 1, adaptive-strict needs fewer re-solves, since fewer "
         "nodes end a step deeper than allowed (measured with 0.9 against 1: "
         "4-6 % fewer Newton iterations for adaptive-strict, 0.4-1.6 % more "
         "for adaptive; doc/convergence.md).");
-      prm.declare_entry(
-        "Damping",
-        "10",
-        Double(1),
-        "Adaptive: a factor may change by at most this ratio "
-        "per estimate; the first estimate starts from the fixed "
-        "penalty (-).");
-      prm.declare_entry(
-        "Freeze factors",
-        "true",
-        Bool(),
-        "Adaptive: stop updating the factors in a step once the "
-        "contact set is unchanged between two iterations (a pair locked "
-        "by 'Max status flips' counts as unchanged while locked). No "
-        "effect with 'Factor update = step'.");
-      prm.declare_entry(
+      d.add("Damping",
+            damping,
+            number("-", 1),
+            "Adaptive: a factor may change by at most this ratio "
+            "per estimate; the first estimate starts from the fixed "
+            "penalty (-).");
+      d.add("Freeze factors",
+            freeze,
+            "Adaptive: stop updating the factors in a step once the "
+            "contact set is unchanged between two iterations (a pair locked "
+            "by 'Max status flips' counts as unchanged while locked). No "
+            "effect with 'Factor update = step'.");
+      d.add(
         "Factor update",
-        "iteration",
-        Selection(factor_update_names.pattern()),
+        factor_update,
+        factor_update_names,
         "Adaptive: when the factors are estimated. iteration: at every "
         "Newton iteration from the current system (until 'Freeze factors' "
         "stops them); at a step's predictor, where the body is far from "
@@ -128,67 +120,43 @@ namespace formsolve
     }
 
     /// Passes over a step, friction and the search for pairs.
-    void Contact::declare_passes(ParameterHandler &prm)
+    void Contact::declare_passes(Declarations &d)
     {
-      prm.declare_entry("Max status flips",
-                        "4",
-                        Integer(1),
-                        "Contact status changes of one node-tool pair within "
-                        "one Newton solve (each strict or Uzawa pass is a "
-                        "solve) after which its status is locked for the rest "
-                        "of the solve.");
-      prm.declare_entry(
+      d.add("Max status flips",
+            max_status_flips,
+            whole_number(1),
+            "Contact status changes of one node-tool pair within "
+            "one Newton solve (each strict or Uzawa pass is a "
+            "solve) after which its status is locked for the rest "
+            "of the solve.");
+      d.add(
         "Max strict passes",
-        "5",
-        Integer(0),
+        max_strict_passes,
+        whole_number(0),
         "adaptive-strict and augmented-lagrangian: re-solves of "
         "one step at most; a step still deeper than allowed "
         "after them is kept and reported in solver.csv (pairs_over_allowed).");
-      prm.declare_entry(
-        "Strict check residual",
-        "0.1",
-        Double(0, 1),
-        "adaptive-strict: within each solve, once |r|/|f| falls below "
-        "this with the contact set unchanged, the nodes deeper than "
-        "allowed get their factors corrected there and the solve goes "
-        "on; this counts as one of the Max strict passes and saves the "
-        "re-solve after convergence (-). 0: check only after "
-        "convergence.");
-      prm.declare_entry("Friction regularisation velocity",
-                        "1e-3",
-                        Double(),
-                        "v0 (mm/s) of the friction law f_t = -mu p (2/pi) "
-                        "atan(|v_t|/v0) v_t/|v_t|.");
-      prm.declare_entry(
-        "Search distance",
-        "1",
-        Double(),
-        "Sheet nodes farther than this from a tool (mm) are not "
-        "checked for contact with it in the current step.");
+      d.add("Strict check residual",
+            strict_check_residual,
+            number("-", 0, 1),
+            "adaptive-strict: within each solve, once |r|/|f| falls below "
+            "this with the contact set unchanged, the nodes deeper than "
+            "allowed get their factors corrected there and the solve goes "
+            "on; this counts as one of the Max strict passes and saves the "
+            "re-solve after convergence (-). 0: check only after "
+            "convergence.");
+      d.add("Friction regularisation velocity",
+            regularisation_velocity,
+            number("mm/s"),
+            "v0 (mm/s) of the friction law f_t = -mu p (2/pi) "
+            "atan(|v_t|/v0) v_t/|v_t|.");
+      d.add("Search distance",
+            search_distance,
+            number("mm"),
+            "Sheet nodes farther than this from a tool (mm) are not "
+            "checked for contact with it in the current step.");
     }
 
-    void Contact::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Contact");
-      penalty_strategy    = prm.get("Penalty strategy");
-      al_penalty          = prm.get("Augmented Lagrangian penalty");
-      penalty_factor      = prm.get_double("Penalty factor");
-      allowed_penetration = prm.get_double("Allowed penetration");
-      lower_bound         = prm.get_double("Lower bound");
-      upper_bound         = prm.get_double("Upper bound");
-      freeze              = prm.get_bool("Freeze factors");
-      factor_update       = factor_update_names.parse(prm.get("Factor update"));
-      adaptive_estimate   = estimate_names.parse(prm.get("Adaptive estimate"));
-      damping             = prm.get_double("Damping");
-      target_fraction     = prm.get_double("Target fraction");
-      max_status_flips    = prm.get_integer("Max status flips");
-      max_strict_passes   = prm.get_integer("Max strict passes");
-      strict_check_residual = prm.get_double("Strict check residual");
-      regularisation_velocity =
-        prm.get_double("Friction regularisation velocity");
-      search_distance = prm.get_double("Search distance");
-      prm.leave_subsection();
-    }
 
     void Contact::validate() const
     {

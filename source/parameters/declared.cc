@@ -1,127 +1,162 @@
+#include <deal.II/base/utilities.h>
+
 #include <formsolve/parameters/declared.h>
 
-#include <boost/property_tree/json_parser.hpp>
-#include <boost/property_tree/ptree.hpp>
-
-#include <cctype>
-#include <sstream>
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 
 namespace formsolve
 {
   namespace parameters
   {
+    std::string exact_text(const double x)
+    {
+      char text[32];
+      for (int digits = 6; digits <= 17; ++digits)
+        {
+          std::snprintf(text, sizeof text, "%.*g", digits, x);
+          if (std::strtod(text, nullptr) == x)
+            break;
+        }
+      return text;
+    }
+
+    Declarations::Declarations(dealii::ParameterHandler &prm)
+        : prm(prm)
+    {}
+
+    DeclaredSection &Declarations::here()
+    {
+      DeclaredSection *s = &root;
+      for (const auto &p : path)
+        s = &s->sections[p];
+      return *s;
+    }
+
+    void Declarations::enter(const std::string &subsection)
+    {
+      prm.enter_subsection(subsection);
+      path.push_back(subsection);
+      here(); // an empty subsection is listed too
+    }
+
+    void Declarations::leave()
+    {
+      prm.leave_subsection();
+      path.pop_back();
+    }
+
+    void
+    Declarations::declare(const std::string &name,
+                          const std::string &default_text,
+                          const Accepts     &accepts,
+                          const std::string &documentation,
+                          const std::function<void(const std::string &)> &read)
+    {
+      read(default_text);
+      prm.declare_entry(name, default_text, *accepts.pattern, documentation);
+      prm.add_action(name, read);
+      here().entries[name] = {default_text, accepts, documentation};
+    }
+
+    void Declarations::add(const std::string &name,
+                           double            &value,
+                           const Accepts     &accepts,
+                           const std::string &documentation)
+    {
+      declare(name,
+              exact_text(value),
+              accepts,
+              documentation,
+              [&value](const std::string &text) {
+                value = std::strtod(text.c_str(), nullptr);
+              });
+    }
+
+    void Declarations::add(const std::string &name,
+                           unsigned int      &value,
+                           const Accepts     &accepts,
+                           const std::string &documentation)
+    {
+      declare(name,
+              std::to_string(value),
+              accepts,
+              documentation,
+              [&value](const std::string &text) {
+                value = std::strtoul(text.c_str(), nullptr, 10);
+              });
+    }
+
+    void Declarations::add(const std::string &name,
+                           bool              &value,
+                           const std::string &documentation)
+    {
+      declare(name,
+              value ? "true" : "false",
+              true_or_false(),
+              documentation,
+              [&value](const std::string &text) {
+                value = text == "true" || text == "yes";
+              });
+    }
+
+    void Declarations::add(const std::string &name,
+                           std::string       &value,
+                           const Accepts     &accepts,
+                           const std::string &documentation)
+    {
+      declare(name,
+              value,
+              accepts,
+              documentation,
+              [&value](const std::string &text) { value = text; });
+    }
+
     namespace
     {
-      using DeclTree = boost::property_tree::ptree;
-
-      /// "Double 0...MAX_DOUBLE (inclusive)" -> "real >= 0", and the like.
-      std::string range(const std::string &p)
+      std::string joined(const double *x, const std::size_t n)
       {
-        const auto  space = p.find(' ');
-        std::string kind  = p.substr(0, space);
-        if (kind == "Bool")
-          return "`true` or `false`";
-        if ((kind != "Double" && kind != "Integer") ||
-            space == std::string::npos)
-          return p;
-        std::string rest = p.substr(space + 1);
-        if (rest.rfind("range ", 0) == 0)
-          rest = rest.substr(6);
-        const auto dots = rest.find("...");
-        const auto end  = rest.find(" (inclusive)");
-        if (dots == std::string::npos || end == std::string::npos)
-          return p;
-        const std::string lo = rest.substr(0, dots),
-                          hi = rest.substr(dots + 3, end - dots - 3);
-        const bool open_lo   = lo == "-MAX_DOUBLE" || lo == "-2147483648",
-                   open_hi   = hi == "MAX_DOUBLE" || hi == "2147483647";
-        kind                 = kind == "Double" ? "real" : "integer";
-        if (open_lo && open_hi)
-          return kind;
-        if (open_hi)
-          return kind + " >= " + lo;
-        if (open_lo)
-          return kind + " <= " + hi;
-        return kind + " in [" + lo + ", " + hi + "]";
+        std::string t;
+        for (std::size_t i = 0; i < n; ++i)
+          t += (i ? ", " : "") + exact_text(x[i]);
+        return t;
       }
 
-      /// "[Selection a|b ]" -> "a \| b"; "[Double 0...MAX_DOUBLE (inclusive)]"
-      /// -> "Double 0...MAX_DOUBLE (inclusive)".
-      std::string accepts_text(std::string p)
+      std::vector<double> numbers_in(const std::string &text)
       {
-        if (p.size() >= 2 && p.front() == '[' && p.back() == ']')
-          p = p.substr(1, p.size() - 2);
-        while (!p.empty() && p.back() == ' ')
-          p.pop_back();
-        if (p.rfind("FileName", 0) == 0)
-          return "a file path (relative to the .prm file that names it)";
-        if (p == "Anything")
-          return "text, as the meaning says";
-        const std::string multiple = "MultipleSelection ";
-        if (p.rfind(multiple, 0) == 0)
-          {
-            std::string        out;
-            std::istringstream in(p.substr(multiple.size()));
-            for (std::string name; std::getline(in, name, '|');)
-              out += (out.empty() ? "`" : ", `") + name + "`";
-            return "a comma-separated list of " + out;
-          }
-        const std::string selection = "Selection ";
-        if (p.rfind(selection, 0) == 0)
-          {
-            std::string        names = p.substr(selection.size()), out;
-            std::istringstream in(names);
-            for (std::string name; std::getline(in, name, '|');)
-              out += (out.empty() ? "`" : ", `") + name + "`";
-            return "one of " + out;
-          }
-        return range(p);
-      }
-
-
-      DeclaredSection section_of(const DeclTree &tree)
-      {
-        DeclaredSection s;
-        for (const auto &[key, child] : tree)
-          if (child.get_child_optional("value"))
-            s.entries[demangle_name(key)] = {
-              child.get<std::string>("default_value"),
-              child.get<std::string>("pattern_description"),
-              child.get<std::string>("documentation")};
-          else
-            s.sections[demangle_name(key)] = section_of(child);
-        return s;
+        return dealii::Utilities::string_to_double(
+          dealii::Utilities::split_string_list(text, ','));
       }
     } // namespace
 
-    std::string demangle_name(const std::string &s)
+    void Declarations::add(const std::string   &name,
+                           std::vector<double> &values,
+                           const Accepts       &accepts,
+                           const std::string   &documentation)
     {
-      std::string d;
-      for (std::size_t i = 0; i < s.size(); ++i)
-        if (s[i] == '_' && i + 2 < s.size() &&
-            std::isxdigit(static_cast<unsigned char>(s[i + 1])) &&
-            std::isxdigit(static_cast<unsigned char>(s[i + 2])))
-          {
-            d += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
-            i += 2;
-          }
-        else
-          d += s[i];
-      return d;
+      declare(name,
+              joined(values.data(), values.size()),
+              accepts,
+              documentation,
+              [&values](const std::string &text) {
+                values = numbers_in(text);
+              });
     }
 
-    DeclaredSection declared(const dealii::ParameterHandler &prm)
+    void Declarations::add(const std::string     &name,
+                           std::array<double, 3> &values,
+                           const Accepts         &accepts,
+                           const std::string     &documentation)
     {
-      std::stringstream json;
-      prm.print_parameters(json, dealii::ParameterHandler::JSON);
-      DeclTree tree;
-      boost::property_tree::read_json(json, tree);
-      return section_of(tree);
-    }
-
-    std::string accepted_values(const std::string &pattern)
-    {
-      return accepts_text(pattern);
+      declare(name,
+              joined(values.data(), values.size()),
+              accepts,
+              documentation,
+              [&values](const std::string &text) {
+                const auto v = numbers_in(text);
+                std::copy(v.begin(), v.end(), values.begin());
+              });
     }
   } // namespace parameters
 } // namespace formsolve

@@ -1,4 +1,4 @@
-#include <formsolve/parameters/choice.h>
+#include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/geometry.h>
 #include <formsolve/parameters/require.h>
 
@@ -6,8 +6,6 @@ namespace formsolve
 {
   namespace parameters
   {
-    using namespace dealii::Patterns;
-
     namespace
     {
       const Choice<BlankShape> blank_shape_names{{"round", BlankShape::round},
@@ -16,67 +14,54 @@ namespace formsolve
                                                  {"gmsh", BlankShape::gmsh}};
     } // namespace
 
-    void Geometry::declare(ParameterHandler &prm)
+    void Geometry::declare(Declarations &d)
     {
-      prm.enter_subsection("Geometry");
-      prm.declare_entry(
+      const Subsection s(d, "Geometry");
+      d.declare(
         "Model",
-        "axisymmetric",
-        Selection(model::model_names()),
+        model::name(model),
+        one_of(model::model_names()),
         "Which part of the scene is modelled. axisymmetric: the r-z section "
         "of a round blank under round tools (2-D, the z axis is the axis of "
         "revolution; the cheapest faithful model of a cylindrical cup); "
         "quarter: x >= 0, y >= 0 with symmetry planes x = 0 and y = 0; half: "
         "x >= 0 with the symmetry plane x = 0; full: the whole sheet. Forces "
-        "are always reported for the full part.");
-      prm.declare_entry(
+        "are always reported for the full part.",
+        [this](const std::string &t) { model = model::parse_model(t); });
+      d.add(
         "Blank shape",
-        "round",
-        Selection(blank_shape_names.pattern()),
+        blank_shape,
+        blank_shape_names,
         "Planform of the full blank: round (Blank diameter) or rectangle "
         "(Blank length x Blank width), of which the Model takes its part; "
         "gmsh reads the planform of the modelled part from 'Mesh file' (3-D "
         "models only). The sheet occupies 0 <= z <= Thickness.");
-      prm.declare_entry("Blank diameter",
-                        "77",
-                        Double(0),
-                        "Diameter d0 of a round blank (mm).");
-      prm.declare_entry("Blank length",
-                        "40",
-                        Double(0),
-                        "Full length of a rectangular blank along x (mm).");
-      prm.declare_entry("Blank width",
-                        "40",
-                        Double(0),
-                        "Full width of a rectangular blank along y (mm).");
-      prm.declare_entry("Thickness",
-                        "0.78",
-                        Double(),
-                        "Initial sheet thickness t0 (mm).");
-      prm.declare_entry(
-        "Mesh file",
-        "",
-        FileName(FileName::input),
-        "For 'gmsh': a 2-D quadrilateral planform mesh (.msh) or a gmsh "
-        "geometry (.geo, meshed on reading by gmsh into quadrilaterals) of "
-        "the modelled part (quarter: x >= 0, y >= 0; half: x >= 0); it is "
-        "extruded through the thickness. A relative path is taken from the "
-        ".prm file that names it (from the working directory with --set).");
-      prm.leave_subsection();
+      d.add("Blank diameter",
+            blank_diameter,
+            number("mm", 0),
+            "Diameter d0 of a round blank (mm).");
+      d.add("Blank length",
+            blank_length,
+            number("mm", 0),
+            "Full length of a rectangular blank along x (mm).");
+      d.add("Blank width",
+            blank_width,
+            number("mm", 0),
+            "Full width of a rectangular blank along y (mm).");
+      d.add("Thickness",
+            thickness,
+            number("mm"),
+            "Initial sheet thickness t0 (mm).");
+      d.add("Mesh file",
+            mesh_file,
+            input_file(),
+            "For 'gmsh': a 2-D quadrilateral planform mesh (.msh) or a gmsh "
+            "geometry (.geo, meshed on reading by gmsh into quadrilaterals) of "
+            "the modelled part (quarter: x >= 0, y >= 0; half: x >= 0); it is "
+            "extruded through the thickness. A relative path is taken from the "
+            ".prm file that names it (from the working directory with --set).");
     }
 
-    void Geometry::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Geometry");
-      model          = model::parse_model(prm.get("Model"));
-      blank_shape    = blank_shape_names.parse(prm.get("Blank shape"));
-      blank_diameter = prm.get_double("Blank diameter");
-      blank_length   = prm.get_double("Blank length");
-      blank_width    = prm.get_double("Blank width");
-      thickness      = prm.get_double("Thickness");
-      mesh_file      = prm.get("Mesh file");
-      prm.leave_subsection();
-    }
 
     void Geometry::validate() const
     {
@@ -98,42 +83,32 @@ namespace formsolve
                 "must be round for Model = axisymmetric");
     }
 
-    void Mesh::declare(ParameterHandler &prm)
+    void Mesh::declare(Declarations &d)
     {
-      prm.enter_subsection("Mesh");
-      prm.declare_entry(
-        "Element degree",
-        "1",
-        Integer(1, 2),
-        "Polynomial degree of the FE_Q velocity elements (1 or 2).");
-      prm.declare_entry(
+      const Subsection s(d, "Mesh");
+      d.add("Element degree",
+            degree,
+            whole_number(1, 2),
+            "Polynomial degree of the FE_Q velocity elements (1 or 2).");
+      d.add(
         "Layers through thickness",
-        "4",
-        Integer(1, 64),
+        layers,
+        whole_number(1, 64),
         "Element layers through the sheet thickness. Bending needs at least "
         "4 layers of degree 1 or 2 layers of degree 2. A power of 2 (2, 4, "
         "8) lets p4est make the last in-plane refinements, so each rank "
         "stores only its part of the mesh; with an odd number, every rank "
         "stores the whole refined planform x layers.");
-      prm.declare_entry(
+      d.add(
         "Planform refinements",
-        "4",
-        Integer(0, 12),
+        refinements,
+        whole_number(0, 12),
         "In-plane resolution. 3-D: global refinements of the coarse planform "
         "before it is extruded (each halves the in-plane element size). "
         "Axisymmetric: the blank radius is divided into 2^(this + 1) equal "
         "elements (the element size of the quarter model's radius).");
-      prm.leave_subsection();
     }
 
-    void Mesh::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Mesh");
-      degree      = prm.get_integer("Element degree");
-      layers      = prm.get_integer("Layers through thickness");
-      refinements = prm.get_integer("Planform refinements");
-      prm.leave_subsection();
-    }
 
     void Mesh::validate() const {}
   } // namespace parameters

@@ -1,5 +1,4 @@
 #include <deal.II/base/exceptions.h>
-#include <deal.II/base/patterns.h>
 
 #include <formsolve/parameters/input_check.h>
 
@@ -95,42 +94,19 @@ namespace formsolve
         return m;
       }
 
-      /// accepted_values() in a sentence: "real in [0, 1]" -> "a number from
-      /// 0 to 1", "integer >= 1" -> "a whole number >= 1".
-      std::string in_words(std::string a)
-      {
-        for (const auto &[kind, words] :
-             {std::pair<std::string, std::string>{"real", "a number"},
-              {"integer", "a whole number"}})
-          if (a.rfind(kind, 0) == 0)
-            {
-              a               = words + a.substr(kind.size());
-              const auto open = a.find(" in [");
-              if (open != std::string::npos && a.back() == ']')
-                {
-                  const auto comma = a.find(", ", open);
-                  a                = a.substr(0, open) + " from " +
-                      a.substr(open + 5, comma - open - 5) + " to " +
-                      a.substr(comma + 2, a.size() - comma - 3);
-                }
-            }
-        return a;
-      }
-
       /// The value's check against its entry's pattern, in plain words.
       void check_value(const DeclaredEntry &entry,
                        const std::string   &where,
                        const std::string   &value)
       {
-        const auto pattern = dealii::Patterns::pattern_factory(entry.pattern);
-        AssertThrow(pattern->match(value),
-                    ExcMessage(
-                      where + ": `" + value + "` is not accepted; it takes " +
-                      in_words(accepted_values(entry.pattern)) +
-                      (value.find(',') != std::string::npos &&
-                           entry.pattern.find("Double") != std::string::npos
-                         ? " (write decimals with a point: 1.5)"
-                         : "")));
+        AssertThrow(entry.accepts.pattern->match(value),
+                    ExcMessage(where + ": `" + value +
+                               "` is not accepted; it takes " +
+                               entry.accepts.words +
+                               (value.find(',') != std::string::npos &&
+                                    entry.accepts.takes_decimals
+                                  ? " (write decimals with a point: 1.5)"
+                                  : "")));
       }
 
       /// The section at @p path below @p root.

@@ -1,6 +1,6 @@
 // The Linear solver subsection (declare, parse, validate); the other
 // solver subsections are in solvers.cc.
-#include <formsolve/parameters/choice.h>
+#include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/require.h>
 #include <formsolve/parameters/solvers.h>
 
@@ -12,8 +12,6 @@ namespace formsolve
 {
   namespace parameters
   {
-    using namespace dealii::Patterns;
-
     namespace
     {
       const Choice<UnsymmetricFactors> unsymmetric_names{
@@ -26,38 +24,34 @@ namespace formsolve
         {"single", FactorPrecision::single_precision}};
     } // namespace
 
-    void LinearSolver::declare(ParameterHandler &prm)
+    void LinearSolver::declare(Declarations &d)
     {
-      prm.enter_subsection("Linear solver");
-      declare_factors(prm);
-      declare_approximate_factors(prm);
-      declare_reuse(prm);
-      prm.declare_entry(
-        "Condition estimate iterations",
-        "0",
-        Integer(0),
-        "Diagnostics: after every linear solve, this many unpreconditioned "
-        "CG iterations on the system matrix give a Lanczos estimate of its "
-        "condition number (solver.csv column condition_estimate; a lower "
-        "bound, meaningful for symmetric systems, i.e. without friction). "
-        "0: off.");
-      prm.leave_subsection();
+      const Subsection s(d, "Linear solver");
+      declare_factors(d);
+      declare_approximate_factors(d);
+      declare_reuse(d);
+      d.add("Condition estimate iterations",
+            condition_iterations,
+            whole_number(0),
+            "Diagnostics: after every linear solve, this many unpreconditioned "
+            "CG iterations on the system matrix give a Lanczos estimate of its "
+            "condition number (solver.csv column condition_estimate; a lower "
+            "bound, meaningful for symmetric systems, i.e. without friction). "
+            "0: off.");
     }
 
-    void LinearSolver::declare_factors(ParameterHandler &prm)
+    void LinearSolver::declare_factors(Declarations &d)
     {
-      prm.declare_entry(
-        "Symmetric factorisation",
-        "true",
-        Bool(),
-        "Factorise as LDL^T (one triangle stored, about half the "
-        "memory and time) whenever the tangent is symmetric, i.e. without "
-        "friction on every tool; "
-        "otherwise as Unsymmetric tangent says. false: always LU.");
-      prm.declare_entry(
+      d.add("Symmetric factorisation",
+            symmetric_factorisation,
+            "Factorise as LDL^T (one triangle stored, about half the "
+            "memory and time) whenever the tangent is symmetric, i.e. without "
+            "friction on every tool; "
+            "otherwise as Unsymmetric tangent says. false: always LU.");
+      d.add(
         "Unsymmetric tangent",
-        "LU",
-        Selection(unsymmetric_names.pattern()),
+        unsymmetric_factors,
+        unsymmetric_names,
         "A tangent K that is not symmetric (sliding friction). LU: factorise K "
         "(exact factors, solved "
         "by one substitution). symmetric part: factorise LDL^T of the "
@@ -66,25 +60,24 @@ namespace formsolve
         "within 30 iterations; Newton keeps the exact tangent. "
         "On several ranks, entries whose transpose lies on another rank are "
         "taken from K's lower triangle.");
-      prm.declare_entry(
-        "Ordering",
-        "METIS",
-        Selection(ordering_names.pattern()),
-        "Pivot order. METIS: nested dissection of the matrix graph by "
-        "METIS_NodeND (Debian's MUMPS is built without METIS; the order is "
-        "computed by formsolve and passed in); automatic: MUMPS's own "
-        "choice (PORD on Debian).");
-      prm.declare_entry(
+      d.add("Ordering",
+            metis_order,
+            ordering_names,
+            "Pivot order. METIS: nested dissection of the matrix graph by "
+            "METIS_NodeND (Debian's MUMPS is built without METIS; the order is "
+            "computed by formsolve and passed in); automatic: MUMPS's own "
+            "choice (PORD on Debian).");
+      d.add(
         "Refinement steps",
-        "0",
-        Integer(0, 100),
+        refinement_steps,
+        whole_number(0, 100),
         "At most this many steps of iterative refinement after each "
         "solve, stopped when the componentwise backward error is at round-off "
         "(MUMPS ICNTL(10)). 0: none.");
-      prm.declare_entry(
+      d.add(
         "Out-of-core directory",
-        "",
-        Anything(),
+        out_of_core_directory,
+        text("a folder path (relative to the working directory), or empty"),
         "An existing, writable directory (absolute, "
         "or relative to the working directory) where MUMPS writes the "
         "factors during each factorisation and reads them back for every "
@@ -95,51 +88,50 @@ namespace formsolve
         "in memory.");
     }
 
-    void LinearSolver::declare_approximate_factors(ParameterHandler &prm)
+    void LinearSolver::declare_approximate_factors(Declarations &d)
     {
-      prm.declare_entry(
+      d.add(
         "Factor precision",
-        "double",
-        Selection(precision_names.pattern()),
+        factor_precision,
+        precision_names,
         "The arithmetic of the factorisation. double: "
         "the factors solve to round-off. single: MUMPS factorises the matrix "
         "rounded to single precision (half the factor memory, fewer "
         "operands to move); every solve is then GMRES in double precision "
         "preconditioned by these factors, to Reuse tolerance within 20 "
         "iterations (doc/performance.md).");
-      prm.declare_entry(
+      d.add(
         "Low-rank tolerance",
-        "0",
-        Double(0),
+        low_rank_tolerance,
+        number("", 0),
         "Block low-rank (BLR) factorisation with this "
         "dropping tolerance (-, relative to the scaled matrix; MUMPS "
         "ICNTL(35) = 2, CNTL(7)), e.g. 1e-8. The factors are then stored "
         "compressed and are approximate: every solve is GMRES preconditioned "
         "by them, to Reuse tolerance within Low-rank iterations. 0: full-rank "
         "factors (exact up to round-off).");
-      prm.declare_entry(
-        "Low-rank iterations",
-        "20",
-        Integer(1, 1000),
-        "GMRES iterations allowed with low-rank factors before the linear "
-        "solve fails (the Newton step is then cut back).");
+      d.add("Low-rank iterations",
+            low_rank_iterations,
+            whole_number(1, 1000),
+            "GMRES iterations allowed with low-rank factors before the linear "
+            "solve fails (the Newton step is then cut back).");
     }
 
-    void LinearSolver::declare_reuse(ParameterHandler &prm)
+    void LinearSolver::declare_reuse(Declarations &d)
     {
-      prm.declare_entry(
+      d.add(
         "Reuse factorisation iterations",
-        "0",
-        Integer(0, 1000),
+        reuse_iterations,
+        whole_number(0, 1000),
         "Solve a new matrix by GMRES preconditioned with the "
         "last numeric factorisation (of an earlier Newton iteration or step) "
         "while GMRES converges within this many iterations; otherwise, or "
         "when the sparsity pattern changed, factorise afresh. 0: a fresh "
         "factorisation for every matrix.");
-      prm.declare_entry(
+      d.add(
         "Reuse velocity change",
-        "0",
-        Double(0),
+        reuse_velocity_change,
+        number("-", 0),
         "Reuse factorisation iterations > 0: try the last factors on a new "
         "matrix only if both belong to the same Newton solve and the "
         "velocities they were assembled at differ by at most this fraction, "
@@ -148,33 +140,14 @@ namespace formsolve
         "converge on old factors, and each such failed attempt costs Reuse "
         "factorisation iterations substitutions (doc/performance.md). 0: "
         "always try, also across solves and steps.");
-      prm.declare_entry(
-        "Reuse tolerance",
-        "1e-10",
-        Double(0),
-        "Relative residual |b - A x|/|b| that GMRES with a reused "
-        "factorisation must reach (-); a fresh factorisation solves to "
-        "round-off.");
+      d.add("Reuse tolerance",
+            reuse_tolerance,
+            number("-", 0),
+            "Relative residual |b - A x|/|b| that GMRES with a reused "
+            "factorisation must reach (-); a fresh factorisation solves to "
+            "round-off.");
     }
 
-    void LinearSolver::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Linear solver");
-      symmetric_factorisation = prm.get_bool("Symmetric factorisation");
-      unsymmetric_factors =
-        unsymmetric_names.parse(prm.get("Unsymmetric tangent"));
-      metis_order           = ordering_names.parse(prm.get("Ordering"));
-      refinement_steps      = prm.get_integer("Refinement steps");
-      condition_iterations  = prm.get_integer("Condition estimate iterations");
-      reuse_iterations      = prm.get_integer("Reuse factorisation iterations");
-      reuse_tolerance       = prm.get_double("Reuse tolerance");
-      reuse_velocity_change = prm.get_double("Reuse velocity change");
-      low_rank_tolerance    = prm.get_double("Low-rank tolerance");
-      low_rank_iterations   = prm.get_integer("Low-rank iterations");
-      out_of_core_directory = prm.get("Out-of-core directory");
-      factor_precision = precision_names.parse(prm.get("Factor precision"));
-      prm.leave_subsection();
-    }
 
     void LinearSolver::validate() const
     {

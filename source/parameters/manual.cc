@@ -1,9 +1,6 @@
 #include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/manual.h>
 
-#include <boost/property_tree/json_parser.hpp>
-#include <boost/property_tree/ptree.hpp>
-
 #include <sstream>
 #include <string>
 
@@ -13,8 +10,6 @@ namespace formsolve
   {
     namespace
     {
-      using Tree = boost::property_tree::ptree;
-
       /// Text fit for one table cell: no line breaks, '|' escaped.
       std::string cell(std::string s)
       {
@@ -26,33 +21,22 @@ namespace formsolve
         return c;
       }
 
-      void write_section(const Tree        &tree,
-                         const std::string &path,
-                         std::ostream      &out)
+      void write_section(const DeclaredSection &section,
+                         const std::string     &path,
+                         std::ostream          &out)
       {
-        bool header = false;
-        for (const auto &[key, child] : tree)
-          if (child.get_child_optional("value"))
-            {
-              if (!header)
-                out << "\n## " << path << "\n\n"
-                    << "| entry | default | accepts | meaning |\n"
-                    << "|---|---|---|---|\n";
-              header                  = true;
-              const std::string value = child.get<std::string>("default_value");
-              out << "| `" << demangle_name(key) << "` | "
-                  << (value.empty() ? "(empty)" : "`" + cell(value) + "`")
-                  << " | "
-                  << cell(accepted_values(
-                       child.get<std::string>("pattern_description")))
-                  << " | " << cell(child.get<std::string>("documentation"))
-                  << " |\n";
-            }
-        for (const auto &[key, child] : tree)
-          if (!child.get_child_optional("value"))
-            write_section(child,
-                          (path.empty() ? "" : path + "/") + demangle_name(key),
-                          out);
+        if (!section.entries.empty())
+          out << "\n## " << path << "\n\n"
+              << "| entry | default | accepts | meaning |\n"
+              << "|---|---|---|---|\n";
+        for (const auto &[name, e] : section.entries)
+          out << "| `" << name << "` | "
+              << (e.default_value.empty() ? "(empty)"
+                                          : "`" + cell(e.default_value) + "`")
+              << " | " << cell(e.accepts.words) << " | "
+              << cell(e.documentation) << " |\n";
+        for (const auto &[name, sub] : section.sections)
+          write_section(sub, (path.empty() ? "" : path + "/") + name, out);
       }
     } // namespace
 
@@ -84,9 +68,7 @@ namespace formsolve
         for (const auto &[name, e] : s.entries)
           {
             comment(e.documentation, indent, out);
-            comment("Accepts: " + accepted_values(e.pattern) + ".",
-                    indent,
-                    out);
+            comment("Accepts: " + e.accepts.words + ".", indent, out);
             out << indent << "set " << name << " = " << e.default_value
                 << "\n\n";
           }
@@ -99,20 +81,16 @@ namespace formsolve
       }
     } // namespace
 
-    void write_parameter_file(const dealii::ParameterHandler &prm,
-                              std::ostream                   &out)
+    void write_parameter_file(const DeclaredSection &declared,
+                              std::ostream          &out)
     {
       out << "# formsolve: every entry with its default, what it means (units "
              "in\n# parentheses) and what it accepts (doc/parameters.md).\n\n";
-      write_prm_section(declared(prm), "", out);
+      write_prm_section(declared, "", out);
     }
 
-    void write_manual(const dealii::ParameterHandler &prm, std::ostream &out)
+    void write_manual(const DeclaredSection &declared, std::ostream &out)
     {
-      std::stringstream json;
-      prm.print_parameters(json, dealii::ParameterHandler::JSON);
-      Tree tree;
-      boost::property_tree::read_json(json, tree);
       out << "# Parameters\n\n"
           << "Every entry of a formsolve `.prm` file, by subsection: its "
              "default, what it accepts, and what it means (units in "
@@ -120,7 +98,7 @@ namespace formsolve
              "doc/parameters.md`; the test `parameter_manual` fails when this "
              "file is not what the program declares. How to use them: "
              "doc/user-guide.md.\n";
-      write_section(tree, "", out);
+      write_section(declared, "", out);
     }
   } // namespace parameters
 } // namespace formsolve

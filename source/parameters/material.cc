@@ -1,4 +1,4 @@
-#include <formsolve/parameters/choice.h>
+#include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/material.h>
 #include <formsolve/parameters/require.h>
 
@@ -11,8 +11,6 @@ namespace formsolve
 {
   namespace parameters
   {
-    using namespace dealii::Patterns;
-
     namespace
     {
       const Choice<RigidZone> rigid_zone_names{{"smooth", RigidZone::smooth},
@@ -87,174 +85,163 @@ namespace formsolve
       }
     } // namespace
 
-    namespace
+    /// The entries of the fracture criteria and the forming limit.
+    void Material::declare_fracture(Declarations &d)
     {
-      /// The entries of the fracture criteria and the forming limit.
-      void declare_fracture(ParameterHandler &prm)
-      {
-        prm.declare_entry(
-          "Oyane a",
-          "",
-          Anything(),
-          "a in Oyane's ductile-fracture integral I = (1/b) int (sigma_m / "
-          "sigma_bar + a) d eps_bar (-); fracture where I reaches 1. A "
-          "number, from this sheet's fracture strains; empty: not given "
-          "(the integral is then not computed). Needed by Fracture "
-          "criterion = oyane.");
-        prm.declare_entry("Oyane b",
-                          "",
-                          Anything(),
-                          "b in Oyane's integral (-), > 0; empty: not given. "
-                          "Needed by Fracture criterion = oyane.");
-        prm.declare_entry(
-          "Cockcroft-Latham critical value",
-          "0",
-          Double(0),
-          "C_crit (MPa) of the Cockcroft-Latham criterion C = int max(sigma_1, "
-          "0) d eps_bar / C_crit; 0: not set (the integral itself is still "
-          "written to the VTU files, so that C_crit can be calibrated).");
-        prm.declare_entry(
-          "Fracture criterion",
-          "none",
-          Selection(fracture_names.pattern()),
-          "The criterion that decides fracture: the punch travel at which it "
-          "first reaches 1 anywhere is the critical stroke. oyane needs Oyane "
-          "a and b, cockcroft-latham its critical value, both of this sheet; "
-          "none: no ductile-fracture criterion (the forming limit curve and "
-          "the neck still mark a split, Split/Measures).");
-        prm.declare_entry(
-          "Fracture measure",
-          "through-thickness average",
-          Selection(measure_names.pattern()),
-          "Where the criterion is read for the critical stroke. through-"
-          "thickness average: the average through the thickness over each "
-          "column of elements, as Oyane's constants are calibrated (from "
-          "section-averaged fracture strains of tensile tests; a bent sheet's "
-          "surface fibre carries bending strain no tensile test saw). local: "
-          "the largest value at any point. Both are computed and reported "
-          "every step (history.csv, run-summary.txt).");
-        prm.declare_entry(
-          "Fracture mean stress",
-          "cell pressure",
-          Selection(mean_stress_names.pattern()),
-          "The mean stress sigma_m in Oyane's and Cockcroft-Latham's "
-          "integrals. cell pressure: the penalty pressure of the element "
-          "(constant per element, as the solver sees it; exact per layer in "
-          "bending, where sigma_m jumps at the neutral axis). projected: the "
-          "cell pressures averaged onto the nodes (lumped L2 projection) and "
-          "interpolated, smooth across elements but smeared over the layer "
-          "next to a jump (doc/theory.md, section 11b).");
-        prm.declare_entry(
-          "Forming limit table",
-          "",
-          Anything(),
-          "The forming limit curve as 'minor:major, minor:major, ...' (true "
-          "strains, minor increasing, at least two points; linear in between, "
-          "constant beyond the ends). Empty: Keeler-Brazier from the hardening "
-          "exponent and the sheet thickness (doc/theory.md, section 11).");
-        prm.declare_entry(
-          "Safety margin",
-          "0.1",
-          Double(0, 1),
-          "Forming limit diagram: a point is at risk of crack when its major "
-          "strain exceeds (1 - this) times the limit at its minor strain "
-          "(-).");
-        prm.declare_entry(
-          "Severe thinning",
-          "0.3",
-          Double(0, 1),
-          "Forming limit diagram: a point below the safety margin is in the "
-          "severe-thinning zone when its thinning 1 - exp(-(major + minor)) "
-          "exceeds this fraction of t0 (-).");
-        prm.declare_entry(
-          "Insufficient stretch",
-          "0.02",
-          Double(0, 1),
-          "Forming limit diagram: a stretched point (major + minor >= 0) "
-          "with a major true strain below this is insufficiently stretched "
-          "(-).");
-      }
-    } // namespace
+      d.declare("Oyane a",
+                "",
+                text("a number, or empty: not given"),
+                "a in Oyane's ductile-fracture integral I = (1/b) int "
+                "(sigma_m / sigma_bar + a) d eps_bar (-); fracture where I "
+                "reaches 1. A number, from this sheet's fracture strains; "
+                "empty: not given (the integral is then not computed). "
+                "Needed by Fracture criterion = oyane.",
+                [this](const std::string &t) {
+                  oyane_a = optional_number(t, "Material/Oyane a");
+                });
+      d.declare("Oyane b",
+                "",
+                text("a number > 0, or empty: not given"),
+                "b in Oyane's integral (-), > 0; empty: not given. Needed "
+                "by Fracture criterion = oyane.",
+                [this](const std::string &t) {
+                  oyane_b = optional_number(t, "Material/Oyane b");
+                });
+      d.add(
+        "Cockcroft-Latham critical value",
+        cockcroft_latham,
+        number("MPa", 0),
+        "C_crit (MPa) of the Cockcroft-Latham criterion C = int max(sigma_1, "
+        "0) d eps_bar / C_crit; 0: not set (the integral itself is still "
+        "written to the VTU files, so that C_crit can be calibrated).");
+      d.add(
+        "Fracture criterion",
+        fracture,
+        fracture_names,
+        "The criterion that decides fracture: the punch travel at which it "
+        "first reaches 1 anywhere is the critical stroke. oyane needs Oyane "
+        "a and b, cockcroft-latham its critical value, both of this sheet; "
+        "none: no ductile-fracture criterion (the forming limit curve and "
+        "the neck still mark a split, Split/Measures).");
+      d.add(
+        "Fracture measure",
+        fracture_measure,
+        measure_names,
+        "Where the criterion is read for the critical stroke. through-"
+        "thickness average: the average through the thickness over each "
+        "column of elements, as Oyane's constants are calibrated (from "
+        "section-averaged fracture strains of tensile tests; a bent sheet's "
+        "surface fibre carries bending strain no tensile test saw). local: "
+        "the largest value at any point. Both are computed and reported "
+        "every step (history.csv, run-summary.txt).");
+      d.add("Fracture mean stress",
+            mean_stress,
+            mean_stress_names,
+            "The mean stress sigma_m in Oyane's and Cockcroft-Latham's "
+            "integrals. cell pressure: the penalty pressure of the element "
+            "(constant per element, as the solver sees it; exact per layer in "
+            "bending, where sigma_m jumps at the neutral axis). projected: the "
+            "cell pressures averaged onto the nodes (lumped L2 projection) and "
+            "interpolated, smooth across elements but smeared over the layer "
+            "next to a jump (doc/theory.md, section 11b).");
+      d.declare(
+        "Forming limit table",
+        "",
+        text("minor:major pairs, comma-separated, or empty"),
+        "The forming limit curve as 'minor:major, minor:major, ...' (true "
+        "strains, minor increasing, at least two points; linear in between, "
+        "constant beyond the ends). Empty: Keeler-Brazier from the hardening "
+        "exponent and the sheet thickness (doc/theory.md, section 11).",
+        [this](const std::string &t) { forming_limit_table = parse_table(t); });
+      d.add("Safety margin",
+            safety_margin,
+            number("-", 0, 1),
+            "Forming limit diagram: a point is at risk of crack when its major "
+            "strain exceeds (1 - this) times the limit at its minor strain "
+            "(-).");
+      d.add("Severe thinning",
+            severe_thinning,
+            number("-", 0, 1),
+            "Forming limit diagram: a point below the safety margin is in the "
+            "severe-thinning zone when its thinning 1 - exp(-(major + minor)) "
+            "exceeds this fraction of t0 (-).");
+      d.add("Insufficient stretch",
+            insufficient_stretch,
+            number("-", 0, 1),
+            "Forming limit diagram: a stretched point (major + minor >= 0) "
+            "with a major true strain below this is insufficiently stretched "
+            "(-).");
+    }
 
-    namespace
+    /// The flow curve's kind and Voce's constants.
+    void Material::declare_flow_curve(Declarations &d)
     {
-      /// The flow curve's kind and Voce's constants.
-      void declare_flow_curve(ParameterHandler &prm)
-      {
-        prm.declare_entry(
-          "Flow curve",
-          "swift",
-          Selection(flow_curve_names.pattern()),
-          "The strain hardening: swift, sigma = K (eps0 + eps)^n (Strength "
-          "coefficient, Prestrain, Hardening exponent); voce, sigma = A - B "
-          "exp(-C eps) (the Voce entries; Hardening exponent is then used "
-          "only as the n-value of the Keeler-Brazier forming limit). Either "
-          "times (rate/rate0)^m.");
-        prm.declare_entry("Voce saturation stress",
-                          "0",
-                          Double(),
-                          "A in the Voce curve (MPa), the flow stress as the "
-                          "strain grows large.");
-        prm.declare_entry("Voce hardening amplitude",
-                          "0",
-                          Double(),
-                          "B in the Voce curve (MPa): A - B is the initial "
-                          "yield stress; 0 <= B < A.");
-        prm.declare_entry(
-          "Tensile strength",
-          "0",
-          Double(0),
-          "R_m (MPa), the engineering tensile strength, for Siebel's "
-          "blank-holder force (Tools/Blank holder/Force = siebel and its "
-          "plausibility check); 0: from the flow curve at Considere's "
-          "uniform strain, sigma(eps_u) exp(-eps_u).");
-        prm.declare_entry("Voce hardening rate",
-                          "0",
-                          Double(),
-                          "C in the Voce curve (-), >= 0.");
-      }
-    } // namespace
+      d.add("Flow curve",
+            flow_curve,
+            flow_curve_names,
+            "The strain hardening: swift, sigma = K (eps0 + eps)^n (Strength "
+            "coefficient, Prestrain, Hardening exponent); voce, sigma = A - B "
+            "exp(-C eps) (the Voce entries; Hardening exponent is then used "
+            "only as the n-value of the Keeler-Brazier forming limit). Either "
+            "times (rate/rate0)^m.");
+      d.add("Voce saturation stress",
+            voce_saturation,
+            number("MPa"),
+            "A in the Voce curve (MPa), the flow stress as the "
+            "strain grows large.");
+      d.add("Voce hardening amplitude",
+            voce_amplitude,
+            number("MPa"),
+            "B in the Voce curve (MPa): A - B is the initial "
+            "yield stress; 0 <= B < A.");
+      d.add("Tensile strength",
+            tensile_strength,
+            number("MPa", 0),
+            "R_m (MPa), the engineering tensile strength, for Siebel's "
+            "blank-holder force (Tools/Blank holder/Force = siebel and its "
+            "plausibility check); 0: from the flow curve at Considere's "
+            "uniform strain, sigma(eps_u) exp(-eps_u).");
+      d.add("Voce hardening rate",
+            voce_rate,
+            number("-"),
+            "C in the Voce curve (-), >= 0.");
+    }
 
-    void Material::declare(ParameterHandler &prm)
+    void Material::declare(Declarations &d)
     {
-      prm.enter_subsection("Material");
-      declare_flow_curve(prm);
-      prm.declare_entry(
-        "Strength coefficient",
-        "829",
-        Double(),
-        "K in the flow stress sigma = K (eps0 + eps)^n (rate/rate0)^m "
-        "(MPa). Default: material B, type 430 stainless.");
-      prm.declare_entry("Hardening exponent",
-                        "0.2",
-                        Double(0, 1),
-                        "Strain-hardening exponent n (-).");
-      prm.declare_entry(
-        "Prestrain",
-        "0.002",
-        Double(),
-        "eps0 (-): keeps the initial flow stress K eps0^n non-zero.");
-      prm.declare_entry(
-        "Rate sensitivity",
-        "0",
-        Double(0, 1),
-        "Strain-rate sensitivity m (-); 0 gives a rigid-plastic law.");
-      prm.declare_entry(
-        "Reference strain rate",
-        "1",
-        Double(),
-        "rate0 in the flow stress law (1/s); also the scale of the "
-        "volumetric penalty.");
-      prm.declare_entry(
-        "Limiting strain rate",
-        "1e-4",
-        Double(),
-        "The cutoff rate (1/s) below which the material behaves as a "
-        "stiff linear viscous body (rigid zones); see Rigid zone.");
-      prm.declare_entry(
+      const Subsection s(d, "Material");
+      declare_flow_curve(d);
+      d.add("Strength coefficient",
+            strength_coefficient,
+            number("MPa"),
+            "K in the flow stress sigma = K (eps0 + eps)^n (rate/rate0)^m "
+            "(MPa). Default: material B, type 430 stainless.");
+      d.add("Hardening exponent",
+            hardening_exponent,
+            number("-", 0, 1),
+            "Strain-hardening exponent n (-).");
+      d.add("Prestrain",
+            prestrain,
+            number("-"),
+            "eps0 (-): keeps the initial flow stress K eps0^n non-zero.");
+      d.add("Rate sensitivity",
+            rate_sensitivity,
+            number("-", 0, 1),
+            "Strain-rate sensitivity m (-); 0 gives a rigid-plastic law.");
+      d.add("Reference strain rate",
+            reference_strain_rate,
+            number("1/s"),
+            "rate0 in the flow stress law (1/s); also the scale of the "
+            "volumetric penalty.");
+      d.add("Limiting strain rate",
+            limiting_strain_rate,
+            number("1/s"),
+            "The cutoff rate (1/s) below which the material behaves as a "
+            "stiff linear viscous body (rigid zones); see Rigid zone.");
+      d.add(
         "Rigid zone",
-        "smooth",
-        Selection(rigid_zone_names.pattern()),
+        rigid_zone,
+        rigid_zone_names,
         "How the flow law meets the rigid zone, with r the equivalent "
         "strain rate and r_c the Limiting strain rate. smooth: the "
         "equivalent stress is s r/sqrt(r^2 + r_c^2), linear viscous well "
@@ -263,45 +250,15 @@ namespace formsolve
         "viscosity frozen at r_c below r_c, the flow stress above; the kink "
         "at r_c costs Newton iterations while points cross it (6-9 % more "
         "on the quarter cup, doc/convergence.md).");
-      prm.declare_entry("Volumetric penalty",
-                        "1e4",
-                        Double(),
-                        "alpha (-): the mean stress is sigma_m = alpha K/rate0 "
-                        "tr(strain rate), integrated with reduced quadrature.");
-      Anisotropy::declare(prm);
-      declare_fracture(prm);
-      prm.leave_subsection();
+      d.add("Volumetric penalty",
+            volumetric_penalty,
+            number("-"),
+            "alpha (-): the mean stress is sigma_m = alpha K/rate0 "
+            "tr(strain rate), integrated with reduced quadrature.");
+      anisotropy.declare(d);
+      declare_fracture(d);
     }
 
-    void Material::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Material");
-      flow_curve            = flow_curve_names.parse(prm.get("Flow curve"));
-      voce_saturation       = prm.get_double("Voce saturation stress");
-      voce_amplitude        = prm.get_double("Voce hardening amplitude");
-      voce_rate             = prm.get_double("Voce hardening rate");
-      tensile_strength      = prm.get_double("Tensile strength");
-      strength_coefficient  = prm.get_double("Strength coefficient");
-      hardening_exponent    = prm.get_double("Hardening exponent");
-      prestrain             = prm.get_double("Prestrain");
-      rate_sensitivity      = prm.get_double("Rate sensitivity");
-      reference_strain_rate = prm.get_double("Reference strain rate");
-      limiting_strain_rate  = prm.get_double("Limiting strain rate");
-      rigid_zone            = rigid_zone_names.parse(prm.get("Rigid zone"));
-      volumetric_penalty    = prm.get_double("Volumetric penalty");
-      anisotropy.parse(prm);
-      oyane_a = optional_number(prm.get("Oyane a"), "Material/Oyane a");
-      oyane_b = optional_number(prm.get("Oyane b"), "Material/Oyane b");
-      cockcroft_latham = prm.get_double("Cockcroft-Latham critical value");
-      fracture         = fracture_names.parse(prm.get("Fracture criterion"));
-      fracture_measure = measure_names.parse(prm.get("Fracture measure"));
-      mean_stress = mean_stress_names.parse(prm.get("Fracture mean stress"));
-      forming_limit_table  = parse_table(prm.get("Forming limit table"));
-      safety_margin        = prm.get_double("Safety margin");
-      severe_thinning      = prm.get_double("Severe thinning");
-      insufficient_stretch = prm.get_double("Insufficient stretch");
-      prm.leave_subsection();
-    }
 
     void Material::validate() const
     {

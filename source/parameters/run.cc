@@ -1,3 +1,4 @@
+#include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/parameters.h>
 #include <formsolve/parameters/plausibility.h>
 #include <formsolve/parameters/require.h>
@@ -15,34 +16,23 @@ namespace formsolve
 {
   namespace parameters
   {
-    void Run::declare(ParameterHandler &prm)
+    void Run::declare(Declarations &d)
     {
-      Geometry::declare(prm);
-      Mesh::declare(prm);
-      MeshRefinement::declare(prm);
-      Material::declare(prm);
-      Tools::declare(prm);
-      Contact::declare(prm);
-      TimeStepping::declare(prm);
-      NonlinearSolver::declare(prm);
-      LinearSolver::declare(prm);
-      Split::declare(prm);
-      Output::declare(prm);
+      geometry.declare(d);
+      mesh.declare(d);
+      refinement.declare(d);
+      material.declare(d);
+      tools.declare(d);
+      contact.declare(d);
+      time.declare(d);
+      nonlinear.declare(d);
+      linear.declare(d);
+      split.declare(d);
+      output.declare(d);
     }
 
-    void Run::parse(ParameterHandler &prm)
+    void Run::complete()
     {
-      geometry.parse(prm);
-      mesh.parse(prm);
-      refinement.parse(prm);
-      material.parse(prm);
-      tools.parse(prm);
-      contact.parse(prm);
-      time.parse(prm);
-      nonlinear.parse(prm);
-      linear.parse(prm);
-      split.parse(prm);
-      output.parse(prm);
       if (tools.holder_force_by_siebel)
         {
           const auto  s    = siebel(*this);

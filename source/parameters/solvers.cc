@@ -1,4 +1,4 @@
-#include <formsolve/parameters/choice.h>
+#include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/require.h>
 #include <formsolve/parameters/solvers.h>
 
@@ -8,8 +8,6 @@ namespace formsolve
 {
   namespace parameters
   {
-    using namespace dealii::Patterns;
-
     namespace
     {
       const Choice<EndOfRun> end_of_run_names{
@@ -30,78 +28,60 @@ namespace formsolve
         {"coarser mesh", FirstStepStart::coarser_mesh}};
     } // namespace
 
-    void TimeStepping::declare(ParameterHandler &prm)
+    void TimeStepping::declare(Declarations &d)
     {
-      prm.enter_subsection("Time stepping");
-      prm.declare_entry(
-        "Time step",
-        "0.25",
-        Double(),
-        "Nominal (and largest) time step (s). With the punch speed it sets "
-        "the punch travel per step.");
-      prm.declare_entry(
-        "Minimum time step",
-        "1e-3",
-        Double(),
-        "Step control: a step that fails (Newton diverges or stalls, the "
-        "linear solver fails) is retried with the time step multiplied by "
-        "'Cutback factor'; below this time step (s) the run stops, after "
-        "writing the output of the last converged step.");
-      prm.declare_entry("Cutback factor",
-                        "0.5",
-                        Double(0.01, 0.9),
-                        "Factor on the time step after a failed step (-).");
-      prm.declare_entry(
-        "Growth factor",
-        "1.5",
-        Double(1, 10),
-        "After an easy step (at most 'Easy step iterations' Newton "
-        "iterations) the time step grows by this factor, up to 'Time "
-        "step' (-).");
-      prm.declare_entry("Easy step iterations",
-                        "8",
-                        Integer(1),
-                        "Newton iterations (all passes of a step) up to "
-                        "which a step counts as easy.");
-      prm.declare_entry(
+      const Subsection s(d, "Time stepping");
+      d.add("Time step",
+            time_step,
+            number("s"),
+            "Nominal (and largest) time step (s). With the punch speed it sets "
+            "the punch travel per step.");
+      d.add("Minimum time step",
+            minimum_time_step,
+            number("s"),
+            "Step control: a step that fails (Newton diverges or stalls, the "
+            "linear solver fails) is retried with the time step multiplied by "
+            "'Cutback factor'; below this time step (s) the run stops, after "
+            "writing the output of the last converged step.");
+      d.add("Cutback factor",
+            cutback_factor,
+            number("-", 0.01, 0.9),
+            "Factor on the time step after a failed step (-).");
+      d.add("Growth factor",
+            growth_factor,
+            number("-", 1, 10),
+            "After an easy step (at most 'Easy step iterations' Newton "
+            "iterations) the time step grows by this factor, up to 'Time "
+            "step' (-).");
+      d.add("Easy step iterations",
+            easy_iterations,
+            whole_number(1),
+            "Newton iterations (all passes of a step) up to "
+            "which a step counts as easy.");
+      d.add(
         "Regrowth after steps",
-        "4",
-        Integer(0),
+        regrowth_steps,
+        whole_number(0),
         "Below 'Time step', the time step also grows by 'Growth factor' "
         "after this many converged steps in a row without a cut and without "
         "growth, easy or not (steps). Where every step needs more than "
         "'Easy step iterations' (fine meshes), a single cut would otherwise "
         "halve the time step for the rest of the run. 0: growth after easy "
         "steps only.");
-      prm.declare_entry("Max cutbacks",
-                        "8",
-                        Integer(0),
-                        "Retries of one step at most; then the run stops.");
-      prm.declare_entry(
-        "End of run",
-        "stroke",
-        Selection(end_of_run_names.pattern()),
-        "stroke: the run ends at the punch stroke. holder release: also "
-        "ends once the blank rim has left the blank holder. draw-through: "
-        "also ends once the whole blank lies inside the die opening (the "
-        "cup is drawn through). The reason is printed and written to "
-        "run-summary.txt.");
-      prm.leave_subsection();
+      d.add("Max cutbacks",
+            max_cutbacks,
+            whole_number(0),
+            "Retries of one step at most; then the run stops.");
+      d.add("End of run",
+            end_of_run,
+            end_of_run_names,
+            "stroke: the run ends at the punch stroke. holder release: also "
+            "ends once the blank rim has left the blank holder. draw-through: "
+            "also ends once the whole blank lies inside the die opening (the "
+            "cup is drawn through). The reason is printed and written to "
+            "run-summary.txt.");
     }
 
-    void TimeStepping::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Time stepping");
-      time_step         = prm.get_double("Time step");
-      minimum_time_step = prm.get_double("Minimum time step");
-      cutback_factor    = prm.get_double("Cutback factor");
-      growth_factor     = prm.get_double("Growth factor");
-      easy_iterations   = prm.get_integer("Easy step iterations");
-      regrowth_steps    = prm.get_integer("Regrowth after steps");
-      max_cutbacks      = prm.get_integer("Max cutbacks");
-      end_of_run        = end_of_run_names.parse(prm.get("End of run"));
-      prm.leave_subsection();
-    }
 
     void TimeStepping::validate() const
     {
@@ -114,22 +94,21 @@ namespace formsolve
               "must not exceed Time stepping/Time step");
     }
 
-    void NonlinearSolver::declare(ParameterHandler &prm)
+    void NonlinearSolver::declare(Declarations &d)
     {
-      prm.enter_subsection("Nonlinear solver");
-      declare_convergence(prm);
-      declare_iterations(prm);
-      declare_first_step(prm);
-      prm.leave_subsection();
+      const Subsection s(d, "Nonlinear solver");
+      declare_convergence(d);
+      declare_iterations(d);
+      declare_first_step(d);
     }
 
     /// The tangent and when a solve has converged.
-    void NonlinearSolver::declare_convergence(ParameterHandler &prm)
+    void NonlinearSolver::declare_convergence(Declarations &d)
     {
-      prm.declare_entry(
+      d.add(
         "Tangent",
-        "stress-velocity",
-        Selection(tangent_names.pattern()),
+        tangent,
+        tangent_names,
         "Linearisation of the flow law. newton: the derivative of the "
         "stress as a function of the velocity; for a nearly rate-insensitive "
         "law it keeps almost no stiffness along the current strain rate and "
@@ -137,30 +116,29 @@ namespace formsolve
         "an unknown of its own at each quadrature point and eliminated "
         "(doc/theory.md, eq. 4b): the same converged solution in fewer "
         "iterations.");
-      prm.declare_entry("Max iterations",
-                        "60",
-                        Integer(1),
-                        "Newton iterations per solve before the step fails "
-                        "(and is retried with a smaller time step).");
-      prm.declare_entry(
-        "Residual tolerance",
-        "1e-5",
-        Double(0),
-        "Converged when |r| <= tol * |f_int|, the norm of the element "
-        "internal-force vectors, and the blank-holder force is within tol "
-        "of its set value (-) ... On the default cup, 1e-5 moves forces, "
-        "thickness and penetration by at most 3e-5 of their values from "
-        "those at 1e-8 (doc/convergence.md).");
-      prm.declare_entry("Correction tolerance",
-                        "1e-5",
-                        Double(0),
-                        "... and the velocity error left, by Correction "
-                        "measure, is <= tol * |v| (-), and the contact set is "
-                        "unchanged.");
-      prm.declare_entry(
+      d.add("Max iterations",
+            max_iterations,
+            whole_number(1),
+            "Newton iterations per solve before the step fails "
+            "(and is retried with a smaller time step).");
+      d.add("Residual tolerance",
+            residual_tolerance,
+            number("-", 0),
+            "Converged when |r| <= tol * |f_int|, the norm of the element "
+            "internal-force vectors, and the blank-holder force is within tol "
+            "of its set value (-) ... On the default cup, 1e-5 moves forces, "
+            "thickness and penetration by at most 3e-5 of their values from "
+            "those at 1e-8 (doc/convergence.md).");
+      d.add("Correction tolerance",
+            correction_tolerance,
+            number("-", 0),
+            "... and the velocity error left, by Correction "
+            "measure, is <= tol * |v| (-), and the contact set is "
+            "unchanged.");
+      d.add(
         "Correction measure",
-        "contraction",
-        Selection(correction_measure_names.pattern()),
+        correction_measure,
+        correction_measure_names,
         "The velocity error compared with Correction tolerance. last "
         "correction: |dv| of the iteration just taken, which bounds the "
         "error before it. contraction: the error it leaves, theta/(1 - "
@@ -168,10 +146,10 @@ namespace formsolve
         "full Newton steps in a row that did not change the contact set, "
         "where theta <= 1/2 (Deuflhard's estimate; |dv| elsewhere). It saves "
         "the last iteration of a quadratically converging solve.");
-      prm.declare_entry(
+      d.add(
         "Forcing",
-        "0",
-        Double(0, 1),
+        forcing,
+        number("-", 0, 1),
         "Inexact Newton: a linear solve that iterates (GMRES with reused, "
         "single-precision, low-rank or symmetric-part factors) stops at "
         "|b - A x|/|b| <= min(0.1, max(Forcing * |r|/|f|, 0.5 Residual "
@@ -185,12 +163,12 @@ namespace formsolve
 
     /// How an iteration starts and moves: predictor, line search, deferred
     /// tangent, Picard.
-    void NonlinearSolver::declare_iterations(ParameterHandler &prm)
+    void NonlinearSolver::declare_iterations(Declarations &d)
     {
-      prm.declare_entry(
+      d.add(
         "Predictor",
-        "keep contact",
-        Selection(predictor_names.pattern()),
+        predictor,
+        predictor_names,
         "The first iterate of a step. previous velocity: the previous step's "
         "velocity. keep contact: the same, except at the nodes that were in "
         "contact at the end of the previous step and that this velocity "
@@ -199,18 +177,16 @@ namespace formsolve
         "just touch the tool at the end of the step (predicted gap 0, zero "
         "force), so that the first Newton direction keeps them on it "
         "(doc/theory.md section 8).");
-      prm.declare_entry(
-        "Max line search steps",
-        "6",
-        Integer(0, 30),
-        "Trial step lengths per Newton iteration after the full step: "
-        "regula falsi on the directional derivative dv.r(v + alpha dv) of "
-        "the potential, then halving of the bracket (doc/theory.md section "
-        "8).");
-      prm.declare_entry(
+      d.add("Max line search steps",
+            max_line_search_steps,
+            whole_number(0, 30),
+            "Trial step lengths per Newton iteration after the full step: "
+            "regula falsi on the directional derivative dv.r(v + alpha dv) of "
+            "the potential, then halving of the bracket (doc/theory.md section "
+            "8).");
+      d.add(
         "Deferred tangent",
-        "true",
-        Bool(),
+        deferred_tangent,
         "Where a Newton step is expected to be the last (quadratic "
         "convergence predicts |r|/|f| <= Residual tolerance after it, and "
         "the step itself meets Correction tolerance), assemble the residual "
@@ -218,44 +194,38 @@ namespace formsolve
         "(or an adaptive penalty estimate reads it). A wrong guess costs one "
         "residual assembly; the iterates are the same (doc/theory.md "
         "section 8).");
-      prm.declare_entry(
-        "Line search memory",
-        "3",
-        Integer(1, 20),
-        "Nonmonotone line search: a trial is measured against the largest "
-        "merit (|r| with the holder's force residual, N) of this many "
-        "previous iterates, the current one included (Grippo, Lampariello "
-        "and Lucidi). 1 is the monotone search: the merit must fall at "
-        "every iteration. Larger values let Newton cross a rise of |r| "
-        "while a plastic zone forms (doc/theory.md section 8).");
-      prm.declare_entry(
-        "Picard iterations",
-        "0",
-        Integer(0),
-        "Direct (secant) iterations at the start of every step.");
-      prm.declare_entry(
-        "Picard fallback",
-        "true",
-        Bool(),
-        "When the line search fails twice in a row (the second time along "
-        "the exact tangent's direction, doc/theory.md section 8), do three "
-        "direct (secant) iterations, then return to Newton.");
-      prm.declare_entry(
-        "Log iterations",
-        "false",
-        Bool(),
-        "Print one line per nonlinear iteration: residual, "
-        "correction, line-search factor, contact-set changes with the "
-        "pairs each tool closed (+) and opened (-).");
+      d.add("Line search memory",
+            line_search_memory,
+            whole_number(1, 20),
+            "Nonmonotone line search: a trial is measured against the largest "
+            "merit (|r| with the holder's force residual, N) of this many "
+            "previous iterates, the current one included (Grippo, Lampariello "
+            "and Lucidi). 1 is the monotone search: the merit must fall at "
+            "every iteration. Larger values let Newton cross a rise of |r| "
+            "while a plastic zone forms (doc/theory.md section 8).");
+      d.add("Picard iterations",
+            picard_iterations,
+            whole_number(0),
+            "Direct (secant) iterations at the start of every step.");
+      d.add("Picard fallback",
+            picard_fallback,
+            "When the line search fails twice in a row (the second time along "
+            "the exact tangent's direction, doc/theory.md section 8), do three "
+            "direct (secant) iterations, then return to Newton.");
+      d.add("Log iterations",
+            log_iterations,
+            "Print one line per nonlinear iteration: residual, "
+            "correction, line-search factor, contact-set changes with the "
+            "pairs each tool closed (+) and opened (-).");
     }
 
     /// Where the first step's Newton starts.
-    void NonlinearSolver::declare_first_step(ParameterHandler &prm)
+    void NonlinearSolver::declare_first_step(Declarations &d)
     {
-      prm.declare_entry(
+      d.add(
         "First step start",
-        "coarser mesh",
-        Selection(first_step_start_names.pattern()),
+        first_step_start,
+        first_step_start_names,
         "Where Newton starts in the first step, when the sheet is at rest. "
         "rest: zero velocity. coarser mesh: the first step is solved first "
         "on the mesh one level coarser everywhere (in the plane and through "
@@ -267,10 +237,10 @@ namespace formsolve
         "coarser mesh keeps the bending: see Coarse cell size limit; "
         "otherwise, and when the coarse solve fails, the step starts from "
         "rest.");
-      prm.declare_entry(
+      d.add(
         "Coarse cell size limit",
-        "2",
-        Double(0),
+        coarse_cell_size_limit,
+        number("", 0),
         "First step start = coarser mesh is used only when the cells of the "
         "coarser mesh are on average no longer than this many initial sheet "
         "thicknesses in the plane (sheet thicknesses, -). On coarser meshes "
@@ -279,28 +249,6 @@ namespace formsolve
         "3 hurts).");
     }
 
-    void NonlinearSolver::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Nonlinear solver");
-      tangent              = tangent_names.parse(prm.get("Tangent"));
-      max_iterations       = prm.get_integer("Max iterations");
-      residual_tolerance   = prm.get_double("Residual tolerance");
-      correction_tolerance = prm.get_double("Correction tolerance");
-      forcing              = prm.get_double("Forcing");
-      correction_measure =
-        correction_measure_names.parse(prm.get("Correction measure"));
-      predictor             = predictor_names.parse(prm.get("Predictor"));
-      max_line_search_steps = prm.get_integer("Max line search steps");
-      line_search_memory    = prm.get_integer("Line search memory");
-      deferred_tangent      = prm.get_bool("Deferred tangent");
-      picard_iterations     = prm.get_integer("Picard iterations");
-      picard_fallback       = prm.get_bool("Picard fallback");
-      log_iterations        = prm.get_bool("Log iterations");
-      first_step_start =
-        first_step_start_names.parse(prm.get("First step start"));
-      coarse_cell_size_limit = prm.get_double("Coarse cell size limit");
-      prm.leave_subsection();
-    }
 
     void NonlinearSolver::validate() const
     {

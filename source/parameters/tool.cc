@@ -1,6 +1,6 @@
 #include <deal.II/base/utilities.h>
 
-#include <formsolve/parameters/choice.h>
+#include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/require.h>
 #include <formsolve/parameters/tool.h>
 
@@ -11,8 +11,6 @@ namespace formsolve
 {
   namespace parameters
   {
-    using namespace dealii::Patterns;
-
     namespace
     {
       const Choice<ToolShape> shape_names{{"round", ToolShape::round},
@@ -30,74 +28,66 @@ namespace formsolve
       return key;
     }
 
-    void Tool::declare(ParameterHandler &prm, const Tool &d)
+    void Tool::declare(Declarations &d)
     {
-      prm.declare_entry("Enabled",
-                        d.enabled ? "true" : "false",
-                        Bool(),
-                        "Whether this tool takes part.");
-      prm.declare_entry(
+      d.add("Enabled", enabled, "Whether this tool takes part.");
+      d.add(
         "Shape",
-        shape_names.name(d.shape),
-        Selection(shape_names.pattern()),
+        shape,
+        shape_names,
         "round: surface of revolution about the z axis (in the axisymmetric "
         "model its r-z profile); rounded rectangle: for square cups (3-D "
         "models); flat: an infinite plane; mesh: the triangulated surface "
         "of 'Mesh file' (3-D models) or its r-z profile (axisymmetric "
         "model), moved by 'Mesh offset' and by 'Gap' away from the sheet.");
-      prm.declare_entry(
-        "Diameter",
-        str(d.diameter),
-        Double(0),
-        "Round tools: punch diameter, die opening diameter, or blank "
-        "holder inner diameter (mm).");
-      prm.declare_entry("Length",
-                        str(d.length),
-                        Double(0),
-                        "Rounded rectangle: full size along x (mm).");
-      prm.declare_entry("Width",
-                        str(d.width),
-                        Double(0),
-                        "Rounded rectangle: full size along y (mm).");
-      prm.declare_entry(
-        "Corner radius",
-        str(d.corner_radius),
-        Double(0),
-        "Rounded rectangle: in-plane corner radius (mm); at least the "
-        "profile radius for a punch.");
-      prm.declare_entry("Profile radius",
-                        str(d.profile_radius),
-                        Double(0),
-                        "Radius of the rounded working edge (punch nose, die "
-                        "entry) (mm).");
-      prm.declare_entry(
-        "Gap",
-        str(d.gap),
-        Double(),
-        "Initial distance between the tool face and the sheet surface "
-        "it acts on (mm). The die is below the sheet (z <= 0), punch "
-        "and blank holder above (z >= thickness).");
-      prm.declare_entry("Friction coefficient",
-                        str(d.friction_coefficient),
-                        Double(0, 1.5),
-                        "Coulomb friction coefficient mu (-); above 0.5 "
-                        "(more than dry sheet forming shows) a warning.");
-      prm.declare_entry(
-        "Penalty factor",
-        str(d.penalty_factor),
-        Double(0),
-        "Fixed contact penalty for this tool (N/mm^3, contact pressure "
-        "per mm of penetration); 0 takes Contact/Penalty factor.");
-      prm.declare_entry(
-        "Allowed penetration",
-        str(d.allowed_penetration),
-        Double(0),
-        "Adaptive penalty: allowed penetration delta into this tool (mm); "
-        "0 takes Contact/Allowed penetration.");
-      prm.declare_entry(
+      d.add("Diameter",
+            diameter,
+            number("mm", 0),
+            "Round tools: punch diameter, die opening diameter, or blank "
+            "holder inner diameter (mm).");
+      d.add("Length",
+            length,
+            number("mm", 0),
+            "Rounded rectangle: full size along x (mm).");
+      d.add("Width",
+            width,
+            number("mm", 0),
+            "Rounded rectangle: full size along y (mm).");
+      d.add("Corner radius",
+            corner_radius,
+            number("mm", 0),
+            "Rounded rectangle: in-plane corner radius (mm); at least the "
+            "profile radius for a punch.");
+      d.add("Profile radius",
+            profile_radius,
+            number("mm", 0),
+            "Radius of the rounded working edge (punch nose, die "
+            "entry) (mm).");
+      d.add("Gap",
+            gap,
+            number("mm"),
+            "Initial distance between the tool face and the sheet surface "
+            "it acts on (mm). The die is below the sheet (z <= 0), punch "
+            "and blank holder above (z >= thickness).");
+      d.add("Friction coefficient",
+            friction_coefficient,
+            number("-", 0, 1.5),
+            "Coulomb friction coefficient mu (-); above 0.5 "
+            "(more than dry sheet forming shows) a warning.");
+      d.add("Penalty factor",
+            penalty_factor,
+            number("N/mm^3", 0),
+            "Fixed contact penalty for this tool (N/mm^3, contact pressure "
+            "per mm of penetration); 0 takes Contact/Penalty factor.");
+      d.add("Allowed penetration",
+            allowed_penetration,
+            number("mm", 0),
+            "Adaptive penalty: allowed penetration delta into this tool (mm); "
+            "0 takes Contact/Allowed penetration.");
+      d.add(
         "Mesh file",
-        d.mesh_file,
-        FileName(FileName::input),
+        mesh_file,
+        input_file(),
         "Shape = mesh: the tool's surface in mm (a relative path is taken "
         "from the .prm file that names it, from the working directory with "
         "--set): STL (ASCII or binary) or a gmsh mesh (.msh, its "
@@ -110,21 +100,21 @@ namespace formsolve
         "(.msh, or a .geo meshed at 'Facet size') drawn in the x-z plane or "
         "in the x-y plane (y as z); a closed profile is the section of the "
         "solid, an open one its working face.");
-      prm.declare_entry("Mesh offset",
-                        "0, 0, 0",
-                        List(Double(), 3, 3, ","),
-                        "Shape = mesh: translation x, y, z added to the "
-                        "file's coordinates (mm).");
-      prm.declare_entry("Facet size",
-                        str(d.facet_size),
-                        Double(0),
-                        "Shape = mesh from .geo, STEP, IGES or BREP: the "
-                        "largest triangle (or profile segment) edge gmsh "
-                        "makes (mm).");
-      prm.declare_entry(
+      d.add("Mesh offset",
+            mesh_offset,
+            numbers("mm", 3, 3),
+            "Shape = mesh: translation x, y, z added to the file's "
+            "coordinates (mm).");
+      d.add("Facet size",
+            facet_size,
+            number("mm", 0),
+            "Shape = mesh from .geo, STEP, IGES or BREP: the "
+            "largest triangle (or profile segment) edge gmsh "
+            "makes (mm).");
+      d.add(
         "Feature angle",
-        str(d.feature_angle),
-        Double(0, 180),
+        feature_angle,
+        number("degrees", 0, 180),
         "Shape = mesh: neighbouring triangles (profile segments) whose "
         "normals differ by more than this (degrees) meet at a sharp edge; "
         "elsewhere the surface "
@@ -132,27 +122,6 @@ namespace formsolve
         "eq. 7b).");
     }
 
-    void Tool::parse(ParameterHandler &prm)
-    {
-      enabled              = prm.get_bool("Enabled");
-      shape                = shape_names.parse(prm.get("Shape"));
-      diameter             = prm.get_double("Diameter");
-      length               = prm.get_double("Length");
-      width                = prm.get_double("Width");
-      corner_radius        = prm.get_double("Corner radius");
-      profile_radius       = prm.get_double("Profile radius");
-      gap                  = prm.get_double("Gap");
-      friction_coefficient = prm.get_double("Friction coefficient");
-      penalty_factor       = prm.get_double("Penalty factor");
-      allowed_penetration  = prm.get_double("Allowed penetration");
-      mesh_file            = prm.get("Mesh file");
-      const auto offset =
-        dealii::Utilities::split_string_list(prm.get("Mesh offset"));
-      for (unsigned int c = 0; c < 3; ++c)
-        mesh_offset[c] = dealii::Utilities::string_to_double(offset[c]);
-      facet_size    = prm.get_double("Facet size");
-      feature_angle = prm.get_double("Feature angle");
-    }
 
     void Tool::validate() const
     {

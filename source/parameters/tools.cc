@@ -1,6 +1,6 @@
 #include <deal.II/base/utilities.h>
 
-#include <formsolve/parameters/choice.h>
+#include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/require.h>
 #include <formsolve/parameters/tools.h>
 
@@ -11,8 +11,6 @@ namespace formsolve
 {
   namespace parameters
   {
-    using namespace dealii::Patterns;
-
     namespace
     {
       const Choice<HolderControl> control_names{{"gap", HolderControl::gap},
@@ -20,131 +18,117 @@ namespace formsolve
                                                  HolderControl::force}};
     } // namespace
 
-    void Tools::declare(ParameterHandler &prm)
+    void Tools::declare(Declarations &d)
     {
-      prm.enter_subsection("Tools");
-      Tool p{"Punch"};
-      Tool d{"Die", true, ToolShape::round, 42.5, 42.5, 42.5, 8, 8};
-      Tool b{"Blank holder", true, ToolShape::round, 58.5, 0, 0, 0, 0};
-
-      prm.enter_subsection("Punch");
-      Tool::declare(prm, p);
-      prm.declare_entry(
-        "Stroke",
-        "30",
-        Double(0),
-        "Total punch travel (mm): the run ends here at the latest (see "
-        "Time stepping/End of run).");
-      prm.declare_entry("Speed",
-                        "1",
-                        Double(0),
-                        "Punch speed (mm/s), moving in -z.");
-      prm.leave_subsection();
-
-      prm.enter_subsection("Die");
-      Tool::declare(prm, d);
-      prm.leave_subsection();
-
-      prm.enter_subsection("Blank holder");
-      Tool::declare(prm, b);
-      prm.declare_entry(
-        "Control",
-        "force",
-        Selection(control_names.pattern()),
-        "gap: the holder stays where 'Gap' puts it. force: the holder moves "
-        "along z so that its contact force on the sheet equals 'Force' in "
-        "every step (solved with the velocities, doc/theory.md); it stops "
-        "where it is once the blank rim has left it.");
-      prm.declare_entry(
+      const Subsection s(d, "Tools");
+      {
+        const Subsection tool(d, "Punch");
+        punch.declare(d);
+        d.add("Stroke",
+              punch_stroke,
+              number("mm", 0),
+              "Total punch travel (mm): the run ends here at the latest (see "
+              "Time stepping/End of run).");
+        d.add("Speed",
+              punch_speed,
+              number("mm/s", 0),
+              "Punch speed (mm/s), moving in -z.");
+      }
+      {
+        const Subsection tool(d, "Die");
+        die.declare(d);
+      }
+      // The names are read ahead (additional_tool_names()), so that their
+      // subsections are declared (declare_additional) when the input is.
+      d.declare(
+        "Additional tools",
+        "",
+        text("names, comma-separated"),
+        "Names of more tools besides punch, die and blank holder (a pad, a "
+        "cushion, a counter punch, a clamp), separated by commas; each has "
+        "a subsection Tools/<name> with the entries of a tool and its side, "
+        "solid and motion (see the subsection <name> below). Their history "
+        "columns carry the name in lower case, spaces as underscores.",
+        [](const std::string &) {});
+      const Subsection tool(d, "Blank holder");
+      blank_holder.declare(d);
+      d.add("Control",
+            holder_control,
+            control_names,
+            "gap: the holder stays where 'Gap' puts it. force: the holder "
+            "moves along z so that its contact force on the sheet equals "
+            "'Force' in every step (solved with the velocities, "
+            "doc/theory.md); it stops where it is once the blank rim has "
+            "left it.");
+      d.declare(
         "Force",
         "2671",
-        Anything(),
+        text("a force in N (a number >= 0) or `siebel`"),
         "Blank-holder force for Control = force (N, >= 0), for the full "
         "part (the model's share is taken by the symmetry factor); or "
         "'siebel': Siebel's rule p = 0.0025 [(d0/d_p - 1)^2 + d_p/(200 t0)] "
         "R_m on the initial flange under the holder, with R_m = "
         "Material/Tensile strength (round blank, punch and holder; the value "
         "is printed). A force below 1/10 or above 10 times Siebel's gets a "
-        "warning.");
-      prm.leave_subsection();
-      prm.declare_entry(
-        "Additional tools",
-        "",
-        Anything(),
-        "Names of more tools besides punch, die and blank holder (a pad, a "
-        "cushion, a counter punch, a clamp), separated by commas; each has "
-        "a subsection Tools/<name> with the entries of a tool and its side, "
-        "solid and motion (see the subsection <name> below). Their history "
-        "columns carry the name in lower case, spaces as underscores.");
-      prm.leave_subsection();
+        "warning.",
+        [this](const std::string &force) { read_holder_force(force); });
     }
 
-    void Tools::declare_additional(ParameterHandler               &prm,
+    void Tools::read_holder_force(const std::string &force)
+    {
+      holder_force_by_siebel = force == "siebel";
+      if (holder_force_by_siebel)
+        return;
+      char *end    = nullptr;
+      holder_force = std::strtod(force.c_str(), &end);
+      require(end != force.c_str() && *end == '\0' &&
+                std::isfinite(holder_force) && holder_force >= 0,
+              "Tools/Blank holder/Force",
+              "`" + force +
+                "` is not accepted; it takes a force in N (a number >= 0) "
+                "or `siebel`");
+    }
+
+    void Tools::declare_additional(Declarations                   &d,
                                    const std::vector<std::string> &names)
     {
-      prm.enter_subsection("Tools");
-      for (const auto &n : names)
-        AdditionalTool::declare(prm, n);
-      prm.leave_subsection();
+      const Subsection s(d, "Tools");
+      additional.assign(names.size(), AdditionalTool{});
+      for (std::size_t i = 0; i < names.size(); ++i)
+        {
+          AdditionalTool &t = additional[i];
+          t.name            = names[i];
+          t.shape           = ToolShape::flat;
+          if (!name_problem(i).empty())
+            continue; // refused by validate()
+          const Subsection tool(d, t.name);
+          t.declare(d);
+        }
     }
 
-    void Tools::parse(ParameterHandler &prm)
+    std::string Tools::name_problem(const std::size_t i) const
     {
-      prm.enter_subsection("Tools");
-      prm.enter_subsection("Punch");
-      punch.parse(prm);
-      punch_stroke = prm.get_double("Stroke");
-      punch_speed  = prm.get_double("Speed");
-      prm.leave_subsection();
-      prm.enter_subsection("Die");
-      die.parse(prm);
-      prm.leave_subsection();
-      prm.enter_subsection("Blank holder");
-      blank_holder.parse(prm);
-      holder_control          = control_names.parse(prm.get("Control"));
-      const std::string force = prm.get("Force");
-      holder_force_by_siebel  = force == "siebel";
-      if (!holder_force_by_siebel)
-        {
-          char *end    = nullptr;
-          holder_force = std::strtod(force.c_str(), &end);
-          require(end != force.c_str() && *end == '\0' &&
-                    std::isfinite(holder_force) && holder_force >= 0,
-                  "Tools/Blank holder/Force",
-                  "`" + force +
-                    "` is not accepted; it takes a force in N "
-                    "(a number >= 0) or `siebel`");
-        }
-      prm.leave_subsection();
-      additional.clear();
-      for (const auto &n :
-           dealii::Utilities::split_string_list(prm.get("Additional tools")))
-        {
-          const std::string key = tool_key(n);
-          require(key != "punch" && key != "die" && key != "blank_holder" &&
-                    n.find('/') == std::string::npos,
-                  "Tools/Additional tools",
-                  "`" + n +
-                    "` cannot name an additional tool (punch, die and blank "
-                    "holder have their own subsections; no '/')");
-          for (const auto &a : additional)
-            require(tool_key(a.name) != key,
-                    "Tools/Additional tools",
-                    "`" + n +
-                      "` is named twice (names differing only in "
-                      "case or in spaces and '_' are the same)");
-          AdditionalTool t;
-          t.name = n;
-          prm.enter_subsection(n);
-          t.parse(prm);
-          prm.leave_subsection();
-          additional.push_back(t);
-        }
-      prm.leave_subsection();
+      const std::string &n   = additional[i].name;
+      const std::string  key = tool_key(n);
+      if (key == "punch" || key == "die" || key == "blank_holder" ||
+          n.find('/') != std::string::npos)
+        return "`" + n +
+               "` cannot name an additional tool (punch, die and blank "
+               "holder have their own subsections; no '/')";
+      for (std::size_t j = 0; j < i; ++j)
+        if (tool_key(additional[j].name) == key)
+          return "`" + n +
+                 "` is named twice (names differing only in case or in "
+                 "spaces and '_' are the same)";
+      return "";
     }
 
     void Tools::validate() const
     {
+      for (std::size_t i = 0; i < additional.size(); ++i)
+        require(name_problem(i).empty(),
+                "Tools/Additional tools",
+                name_problem(i));
       punch.validate();
       die.validate();
       blank_holder.validate();

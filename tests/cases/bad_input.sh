@@ -51,7 +51,7 @@ expect did_you_mean_subsection 'no subsection `Blankholder` in subsection `Tools
   "$work/subsection.prm"
 expect did_you_mean_override '--set "Tool/Punch/Stroke=5": there is no subsection `Tool` at the top level; did you mean `Tools`?' \
   "$base" --set "Tool/Punch/Stroke=5"
-expect decimal_comma 'Geometry/Thickness=1,0": `1,0` is not accepted; it takes a number (write decimals with a point' \
+expect decimal_comma 'Geometry/Thickness=1,0": `1,0` is not accepted; it takes a number, in mm (write decimals with a point' \
   "$base" --set "Geometry/Thickness=1,0"
 expect range_in_words 'it takes a number from 0 to 1' "$base" --set "Material/Hardening exponent=2"
 printf 'include %s\nsubsection Geometry\n' "$(realpath "$base")" > "$work/unclosed.prm"

@@ -32,9 +32,8 @@ namespace formsolve
       double                force            = 0;  // N, full part (force)
       unsigned int          refinement_level = 0;
 
-      /// The entries of subsection Tools/<name>.
-      static void declare(ParameterHandler &prm, const std::string &name);
-      void        parse(ParameterHandler &prm);
+      /// The entries of subsection Tools/<name>, bound to these members.
+      void declare(Declarations &d);
       /// @p axisymmetric, @p symmetric_x/y: the model's symmetries, which a
       /// direction must keep.
       void validate(const bool axisymmetric,

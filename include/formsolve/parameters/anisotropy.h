@@ -5,8 +5,6 @@
 // (doc/theory.md, section 3a).
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <string>
 #include <vector>
 
@@ -14,6 +12,8 @@ namespace formsolve
 {
   namespace parameters
   {
+    class Declarations;
+
     enum class YieldCriterion
     {
       von_mises,
@@ -63,9 +63,9 @@ namespace formsolve
       std::string describe() const;
 
       /// Entries inside subsection "Material".
-      static void declare(dealii::ParameterHandler &prm);
-      void        parse(dealii::ParameterHandler &prm);
-      void        validate() const;
+      /// Declares the entries, bound to these members.
+      void declare(Declarations &d);
+      void validate() const;
     };
   } // namespace parameters
 } // namespace formsolve

@@ -1,7 +1,8 @@
 // The command-line front: input file, --set overrides, --print-parameters.
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
+#include <formsolve/parameters/declared.h>
+#include <formsolve/parameters/tools.h>
 
 #include <string>
 #include <utility>
@@ -27,8 +28,10 @@ namespace formsolve
       static std::string usage();
     };
 
-    /// Read the input file into @p prm (declared already), then apply the
+    /// Reads the input file into what @p declarations binds (the additional
+    /// tools' subsections declared first, into @p tools), then applies the
     /// overrides. Errors name the file or the entry.
-    void read_input(dealii::ParameterHandler &prm, const CommandLine &cl);
+    void
+    read_input(Declarations &declarations, Tools &tools, const CommandLine &cl);
   } // namespace parameters
 } // namespace formsolve

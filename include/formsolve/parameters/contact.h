@@ -1,15 +1,13 @@
 // Subsection "Contact": penalty strategy, friction law, contact search.
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <string>
 
 namespace formsolve
 {
   namespace parameters
   {
-    using dealii::ParameterHandler;
+    class Declarations;
 
     enum class AdaptiveEstimate
     {
@@ -45,14 +43,14 @@ namespace formsolve
       double           regularisation_velocity = 1e-3; // mm/s
       double           search_distance         = 1;    // mm
 
-      static void declare(ParameterHandler &prm);
-      void        parse(ParameterHandler &prm);
-      void        validate() const;
+      /// Declares the entries, bound to these members.
+      void declare(Declarations &d);
+      void validate() const;
 
     private:
-      static void declare_strategy(ParameterHandler &prm);
-      static void declare_adaptive(ParameterHandler &prm);
-      static void declare_passes(ParameterHandler &prm);
+      void declare_strategy(Declarations &d);
+      void declare_adaptive(Declarations &d);
+      void declare_passes(Declarations &d);
     };
   } // namespace parameters
 } // namespace formsolve

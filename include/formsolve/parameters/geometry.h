@@ -1,8 +1,6 @@
 // Subsections "Geometry" (the model and the blank) and "Mesh".
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <formsolve/model/model.h>
 
 #include <string>
@@ -11,7 +9,7 @@ namespace formsolve
 {
   namespace parameters
   {
-    using dealii::ParameterHandler;
+    class Declarations;
 
     enum class BlankShape
     {
@@ -32,9 +30,9 @@ namespace formsolve
       double       thickness      = 0.78; // mm
       std::string  mesh_file;             // gmsh .msh or .geo (2-D planform)
 
-      static void declare(ParameterHandler &prm);
-      void        parse(ParameterHandler &prm);
-      void        validate() const;
+      /// Declares the entries, bound to these members.
+      void declare(Declarations &d);
+      void validate() const;
 
       /// Factor from the modelled part to the full part (4 for a quarter).
       double symmetry_factor() const { return model::symmetry_factor(model); }
@@ -47,9 +45,9 @@ namespace formsolve
       unsigned int layers      = 4;
       unsigned int refinements = 4;
 
-      static void declare(ParameterHandler &prm);
-      void        parse(ParameterHandler &prm);
-      void        validate() const;
+      /// Declares the entries, bound to these members.
+      void declare(Declarations &d);
+      void validate() const;
     };
   } // namespace parameters
 } // namespace formsolve

@@ -1,8 +1,6 @@
 // Subsection "Material": flow stress and the flow-formulation constants.
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <formsolve/parameters/anisotropy.h>
 
 #include <cmath>
@@ -15,7 +13,7 @@ namespace formsolve
 {
   namespace parameters
   {
-    using dealii::ParameterHandler;
+    class Declarations;
 
     enum class FractureCriterion
     {
@@ -99,9 +97,13 @@ namespace formsolve
                                              : strength_coefficient;
       }
 
-      static void declare(ParameterHandler &prm);
-      void        parse(ParameterHandler &prm);
-      void        validate() const;
+      /// Declares the entries, bound to these members.
+      void declare(Declarations &d);
+      void validate() const;
+
+    private:
+      void declare_flow_curve(Declarations &d);
+      void declare_fracture(Declarations &d);
     };
   } // namespace parameters
 } // namespace formsolve

@@ -1,8 +1,6 @@
 // Subsection "Output".
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <string>
 #include <vector>
 
@@ -10,7 +8,7 @@ namespace formsolve
 {
   namespace parameters
   {
-    using dealii::ParameterHandler;
+    class Declarations;
 
     struct Output
     {
@@ -24,9 +22,9 @@ namespace formsolve
       double              checkpoint_minutes  = 10; // wall time; 0: off
       std::vector<double> profile_travels; // mm: sheet_<travel>mm.csv there
 
-      static void declare(ParameterHandler &prm);
-      void        parse(ParameterHandler &prm);
-      void        validate() const;
+      /// Declares the entries, bound to these members.
+      void declare(Declarations &d);
+      void validate() const;
     };
   } // namespace parameters
 } // namespace formsolve

@@ -1,5 +1,5 @@
-// All .prm subsections of a run: one struct each (declare, parse,
-// validate), and the cross-subsection checks.
+// All .prm subsections of a run: one struct each (declare, validate), and
+// the cross-subsection checks.
 #pragma once
 
 #include <formsolve/parameters/contact.h>
@@ -29,8 +29,12 @@ namespace formsolve
       Split           split;
       Output          output;
 
-      static void declare(ParameterHandler &prm);
-      void        parse(ParameterHandler &prm);
+      /// Declares every subsection, bound to these members: reading the
+      /// input fills them. The object must not move until then.
+      void declare(Declarations &d);
+      /// What follows from several entries once the input is read (the
+      /// holder force by Siebel's rule).
+      void complete();
       /// Cross-subsection checks; throws with a message naming the entries.
       void validate() const;
       /// Whether the Newton tangent is symmetric: every enabled tool is

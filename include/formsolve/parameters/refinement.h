@@ -2,13 +2,11 @@
 // error indicator (p4est; levels count from the initial mesh).
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
-
 namespace formsolve
 {
   namespace parameters
   {
-    using dealii::ParameterHandler;
+    class Declarations;
 
     enum class Indicator
     {
@@ -30,8 +28,8 @@ namespace formsolve
       double       refine_fraction = 0.1, coarsen_fraction = 0.3;
       unsigned int min_layers = 4; // element layers at the radii
 
-      static void declare(ParameterHandler &prm);
-      void        parse(ParameterHandler &prm);
+      /// Declares the entries, bound to these members.
+      void declare(Declarations &d);
       /// Needs Mesh/Layers through thickness.
       void validate(const unsigned int layers) const;
       bool enabled() const { return interval > 0; }

@@ -2,15 +2,13 @@
 // "Linear solver".
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <string>
 
 namespace formsolve
 {
   namespace parameters
   {
-    using dealii::ParameterHandler;
+    class Declarations;
 
     enum class EndOfRun
     {
@@ -30,9 +28,9 @@ namespace formsolve
       unsigned int max_cutbacks      = 8; // per step
       EndOfRun     end_of_run        = EndOfRun::stroke;
 
-      static void declare(ParameterHandler &prm);
-      void        parse(ParameterHandler &prm);
-      void        validate() const;
+      /// Declares the entries, bound to these members.
+      void declare(Declarations &d);
+      void validate() const;
     };
 
     /// Linearisation of the flow law in the Newton tangent.
@@ -87,14 +85,14 @@ namespace formsolve
       /// longer than this many sheet thicknesses in the plane.
       double coarse_cell_size_limit = 2;
 
-      static void declare(ParameterHandler &prm);
-      void        parse(ParameterHandler &prm);
-      void        validate() const;
+      /// Declares the entries, bound to these members.
+      void declare(Declarations &d);
+      void validate() const;
 
     private:
-      static void declare_convergence(ParameterHandler &prm);
-      static void declare_iterations(ParameterHandler &prm);
-      static void declare_first_step(ParameterHandler &prm);
+      void declare_convergence(Declarations &d);
+      void declare_iterations(Declarations &d);
+      void declare_first_step(Declarations &d);
     };
 
     /// MUMPS: how a tangent that is not symmetric (sliding friction) is
@@ -137,14 +135,14 @@ namespace formsolve
       /// Single-precision factors as GMRES's preconditioner.
       FactorPrecision factor_precision = FactorPrecision::double_precision;
 
-      static void declare(ParameterHandler &prm);
-      void        parse(ParameterHandler &prm);
-      void        validate() const;
+      /// Declares the entries, bound to these members.
+      void declare(Declarations &d);
+      void validate() const;
 
     private:
-      static void declare_factors(ParameterHandler &prm);
-      static void declare_approximate_factors(ParameterHandler &prm);
-      static void declare_reuse(ParameterHandler &prm);
+      void declare_factors(Declarations &d);
+      void declare_approximate_factors(Declarations &d);
+      void declare_reuse(Declarations &d);
     };
   } // namespace parameters
 } // namespace formsolve

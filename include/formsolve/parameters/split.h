@@ -2,13 +2,11 @@
 // then (doc/theory.md, section 11c).
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
-
 namespace formsolve
 {
   namespace parameters
   {
-    using dealii::ParameterHandler;
+    class Declarations;
 
     /// What the run does once the sheet has split.
     enum class AfterSplit
@@ -32,9 +30,9 @@ namespace formsolve
       /// travel, while the punch force falls.
       double neck_thinning_rate = 0.05;
 
-      static void declare(ParameterHandler &prm);
-      void        parse(ParameterHandler &prm);
-      void        validate() const;
+      /// Declares the subsection, bound to these members.
+      void declare(Declarations &d);
+      void validate() const;
     };
   } // namespace parameters
 } // namespace formsolve

@@ -2,8 +2,6 @@
 // contact settings and the surface file of a meshed tool.
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <array>
 #include <string>
 
@@ -11,7 +9,7 @@ namespace formsolve
 {
   namespace parameters
   {
-    using dealii::ParameterHandler;
+    class Declarations;
 
     enum class ToolShape
     {
@@ -53,10 +51,10 @@ namespace formsolve
                shape == ToolShape::rounded_rectangle;
       }
 
-      /// Declares the common entries inside the current subsection.
-      static void declare(ParameterHandler &prm, const Tool &defaults);
-      void        parse(ParameterHandler &prm);
-      void        validate() const;
+      /// Declares the common entries inside the current subsection, bound
+      /// to these members (their values now are the defaults).
+      void declare(Declarations &d);
+      void validate() const;
     };
 
   } // namespace parameters

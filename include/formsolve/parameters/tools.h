@@ -20,7 +20,10 @@ namespace formsolve
 
     struct Tools
     {
-      Tool punch{"Punch"}, die{"Die"}, blank_holder{"Blank holder"};
+      Tool punch{"Punch"};
+      Tool die{"Die", true, ToolShape::round, 42.5, 42.5, 42.5, 8, 8};
+      Tool
+        blank_holder{"Blank holder", true, ToolShape::round, 58.5, 0, 0, 0, 0};
 
       double punch_stroke = 30; // mm, total punch travel (bound of the run)
       double punch_speed  = 1;  // mm/s, in -z
@@ -31,13 +34,19 @@ namespace formsolve
 
       std::vector<AdditionalTool> additional;
 
-      static void declare(ParameterHandler &prm);
-      /// The subsections Tools/<name> of the additional tools @p names
-      /// (read from the input by additional_tool_names()).
-      static void declare_additional(ParameterHandler               &prm,
-                                     const std::vector<std::string> &names);
-      void        parse(ParameterHandler &prm);
-      void        validate() const;
+      /// Declares the entries, bound to these members.
+      void declare(Declarations &d);
+      /// The entry Tools/Additional tools and the subsections Tools/<name>
+      /// of the additional tools @p names (read from the input ahead by
+      /// additional_tool_names()).
+      void declare_additional(Declarations                   &d,
+                              const std::vector<std::string> &names);
+      void validate() const;
+
+    private:
+      void read_holder_force(const std::string &force);
+      /// Why additional tool @p i cannot have its name; empty if it can.
+      std::string name_problem(const std::size_t i) const;
     };
   } // namespace parameters
 } // namespace formsolve
