@@ -18,10 +18,14 @@ names = [n for n in ["uniform-3", "uniform-4", "uniform-5", "adaptive", "adaptiv
 
 
 def summary(name):
+    """The numeric entries of run-summary.txt (text ones, e.g. model, are left out)."""
     d = {}
     for line in open(os.path.join(res, name, "run-summary.txt")):
-        k, v = line.split("=")
-        d[k.strip()] = float(v)
+        k, _, v = line.partition(" = ")
+        try:
+            d[k.strip()] = float(v)
+        except ValueError:
+            pass
     return d
 
 
