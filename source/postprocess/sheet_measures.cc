@@ -52,98 +52,69 @@ namespace formsolve
     void SheetMeasures<dim>::measure(const state::State<dim>        &state,
                                      const material::DamageCriteria &damage)
     {
-      const Records local  = local_records(state, damage);
-      const auto all_nodes = Utilities::MPI::gather(state.comm, local.nodes, 0);
-      const auto all_cells = Utilities::MPI::gather(state.comm, local.cells, 0);
-      const auto all_damages =
-        Utilities::MPI::gather(state.comm, local.damages, 0);
-
-      std::vector<double> packed; // the summary, broadcast from rank 0
-      cols.clear();
-      keys.clear();
-      if (Utilities::MPI::this_mpi_process(state.comm) == 0)
-        {
-          assemble_columns(all_nodes, all_cells, all_damages);
-          const SheetSummary<dim> s = summarise();
-          packed                    = {s.min_thickness,
-                                       s.min_thickness_radius,
-                                       s.max_thinning,
-                                       s.max_thickening,
-                                       s.flc_margin,
-                                       s.cup_height,
-                                       s.blank_radius,
-                                       s.flc_radius,
-                                       s.flc_angle};
-          for (unsigned int d = 0; d < dim; ++d)
-            packed.push_back(s.min_thickness_location[d]);
-          for (unsigned int d = 0; d < dim; ++d)
-            packed.push_back(s.flc_location[d]);
-          for (const auto n : s.zone_count)
-            packed.push_back(n);
-          packed.insert(packed.end(), s.rim_radius.begin(), s.rim_radius.end());
-          packed.insert(packed.end(), s.draw_in.begin(), s.draw_in.end());
-        }
-      packed            = Utilities::MPI::broadcast(state.comm, packed, 0);
-      std::size_t i     = 0;
-      sum.min_thickness = packed[i++];
-      sum.min_thickness_radius = packed[i++];
-      sum.max_thinning         = packed[i++];
-      sum.max_thickening       = packed[i++];
-      sum.flc_margin           = packed[i++];
-      sum.cup_height           = packed[i++];
-      sum.blank_radius         = packed[i++];
-      sum.flc_radius           = packed[i++];
-      sum.flc_angle            = packed[i++];
-      for (unsigned int d = 0; d < dim; ++d)
-        sum.min_thickness_location[d] = packed[i++];
-      for (unsigned int d = 0; d < dim; ++d)
-        sum.flc_location[d] = packed[i++];
-      for (auto &n : sum.zone_count)
-        n = static_cast<unsigned int>(packed[i++]);
-      const std::size_t directions = (packed.size() - i) / 2;
-      sum.rim_radius.assign(packed.begin() + i,
-                            packed.begin() + i + directions);
-      sum.draw_in.assign(packed.begin() + i + directions, packed.end());
+      const std::pair<unsigned int, types::global_dof_index> now{
+        state.step,
+        state.dof_handler.n_dofs()};
+      if (now == measured)
+        return;
+      std::vector<std::array<Key, n_corners>> mid;
+      const Outbox                            received =
+        exchange_records(state.comm, local_records(state, damage, mid));
+      std::map<unsigned int, std::vector<Key>> corners;
+      assemble_columns(received, corners);
+      cell_centre_thickness(state.comm, mid, corners);
+      sum      = summarise(state.comm);
+      measured = now;
     }
 
     template <int dim>
-    std::vector<double>
-    SheetMeasures<dim>::node_records(const state::State<dim> &state) const
+    std::size_t SheetMeasures<dim>::find(const Key &k) const
+    {
+      const auto it = std::lower_bound(keys.begin(), keys.end(), k);
+      return it != keys.end() && *it == k ? std::size_t(it - keys.begin())
+                                          : cols.size();
+    }
+
+    template <int dim>
+    void SheetMeasures<dim>::node_records(const state::State<dim> &state,
+                                          Outbox                  &out) const
     {
       // Surface nodes (top, bottom) and rim nodes between them, and
       // whether a tool presses on each.
-      const double        tol = 1e-6 * t0;
-      std::vector<double> nodes;
-      std::vector<bool>   touching(state.contact_set.nodes.size(), false);
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(state.comm);
+      const double       tol     = 1e-6 * t0;
+      std::vector<bool>  touching(state.contact_set.nodes.size(), false);
       for (const auto &pair : state.contact_set.pairs)
         if (pair.active)
           touching[pair.node] = true;
       for (unsigned int n = 0; n < state.contact_set.nodes.size(); ++n)
         {
-          const auto       &node = state.contact_set.nodes[n];
-          const Point<dim> &X    = node.reference_position;
-          const double      z    = X[dim - 1];
-          const double      side = z < tol ? 0. : z > t0 - tol ? 1. : 2.;
-          for (const auto k : key(X))
-            nodes.push_back(k);
+          const auto       &node  = state.contact_set.nodes[n];
+          const Point<dim> &X     = node.reference_position;
+          const double      z     = X[dim - 1];
+          const double      side  = z < tol ? 0. : z > t0 - tol ? 1. : 2.;
+          const Key         k     = key(X);
+          auto             &nodes = out[column_owner(k, n_ranks)];
+          nodes.push_back(node_record);
+          nodes.insert(nodes.end(), k.begin(), k.end());
           nodes.push_back(side);
           nodes.push_back(touching[n] ? 1. : 0.);
           for (unsigned int d = 0; d < dim; ++d)
             nodes.push_back(X[d] + state.displacement_ghost[node.dofs[d]]);
         }
-      return nodes;
     }
 
     template <int dim>
-    typename SheetMeasures<dim>::Records SheetMeasures<dim>::local_records(
-      const state::State<dim>        &state,
-      const material::DamageCriteria &damage) const
+    Outbox SheetMeasures<dim>::local_records(
+      const state::State<dim>                 &state,
+      const material::DamageCriteria          &damage,
+      std::vector<std::array<Key, n_corners>> &mid) const
     {
       constexpr unsigned int nc  = n_corners;
-      const double           tol = 1e-6 * t0;
-      Records                r;
-      r.nodes                    = node_records(state);
-      std::vector<double> &cells = r.cells, &damages = r.damages;
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(state.comm);
+      const double       tol     = 1e-6 * t0;
+      Outbox             out;
+      node_records(state, out);
 
       // Cells: mid-plane strain and normal, and damage per planform cell.
       const double zm = 0.5 * t0;
@@ -160,10 +131,15 @@ namespace formsolve
           for (const auto &h : state.history.get_data(cell))
             dmax =
               std::max(dmax, damage.deciding(h->oyane, h->cockcroft_latham));
+          std::array<Key, n_corners> corner;
           for (unsigned int c = 0; c < nc; ++c)
-            for (const auto k : key(cell->vertex(c)))
-              damages.push_back(k);
-          damages.push_back(dmax);
+            {
+              corner[c]  = key(cell->vertex(c));
+              auto &recs = out[column_owner(corner[c], n_ranks)];
+              recs.push_back(damage_record);
+              recs.insert(recs.end(), corner[c].begin(), corner[c].end());
+              recs.push_back(dmax);
+            }
           if (!(zb <= zm + tol && zm + tol < zt))
             continue;
           const double                      zeta = (zm - zb) / (zt - zb);
@@ -206,58 +182,38 @@ namespace formsolve
               normal = cross_product_3d(g1, g2);
               normal /= normal.norm();
             }
+          mid.push_back(corner);
           for (unsigned int c = 0; c < nc; ++c)
             {
-              for (const auto k : key(cell->vertex(c)))
-                cells.push_back(k);
+              auto &recs = out[column_owner(corner[c], n_ranks)];
+              recs.push_back(corner_record);
+              recs.insert(recs.end(), corner[c].begin(), corner[c].end());
               for (unsigned int d = 0; d < dim; ++d)
-                cells.push_back(m[c][d]);
+                recs.push_back(m[c][d]);
+              recs.push_back(major);
+              recs.push_back(minor);
+              for (unsigned int d = 0; d < dim; ++d)
+                recs.push_back(normal[d]);
             }
-          cells.push_back(major);
-          cells.push_back(minor);
-          for (unsigned int d = 0; d < dim; ++d)
-            cells.push_back(normal[d]);
         }
-
-      return r;
+      return out;
     }
 
     template <int dim>
     std::vector<NodalScalar>
     SheetMeasures<dim>::nodal_fields(const state::State<dim> &state)
     {
-      // Columns from rank 0: key, thickness, thinning, major, minor, zone.
-      constexpr unsigned int nk = dim - 1, stride = nk + 5;
-      std::vector<double>    flat;
-      for (std::size_t c = 0; c < cols.size(); ++c)
-        {
-          for (const auto k : keys[c])
-            flat.push_back(k);
-          flat.insert(flat.end(),
-                      {cols[c].thickness,
-                       100. * (1. - cols[c].thickness / t0),
-                       cols[c].major,
-                       cols[c].minor,
-                       double(static_cast<int>(cols[c].zone))});
-        }
-      flat = Utilities::MPI::broadcast(state.comm, flat, 0);
-      std::map<Key, std::size_t> index;
-      for (std::size_t i = 0; i < flat.size(); i += stride)
-        {
-          Key k;
-          for (unsigned int d = 0; d < nk; ++d)
-            k[d] = static_cast<long long>(flat[i + d]);
-          index[k] = i + nk;
-        }
+      // Each rank asks the owners of its DoFs' columns for thickness,
+      // thinning, major, minor and zone (NaN: no column there).
+      constexpr unsigned int nk = dim - 1, nf = 5;
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(state.comm);
       std::map<types::global_dof_index, Point<dim>> support;
       DoFTools::map_dofs_to_support_points(state.reference_mapping,
                                            state.dof_handler,
                                            support);
-      std::array<VectorType, 5> owned;
-      for (auto &v : owned)
-        v.reinit(state.owned, state.comm);
-      const auto                          &fe = state.dof_handler.get_fe();
-      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      const auto                            &fe = state.dof_handler.get_fe();
+      std::vector<types::global_dof_index>   dofs(fe.n_dofs_per_cell());
+      std::map<types::global_dof_index, Key> asked;
       for (const auto &cell : state.dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -265,15 +221,47 @@ namespace formsolve
             for (unsigned int j = 0; j < dofs.size(); ++j)
               if (fe.system_to_component_index(j).first == 0 &&
                   state.owned.is_element(dofs[j]))
-                {
-                  const auto it = index.find(key(support[dofs[j]]));
-                  if (it == index.end())
-                    continue;
-                  for (unsigned int f = 0; f < 5; ++f)
-                    owned[f][dofs[j]] = flat[it->second + f];
-                }
+                asked[dofs[j]] = key(support[dofs[j]]);
           }
-      for (unsigned int f = 0; f < 5; ++f)
+      Outbox questions;
+      for (const auto &[dof, k] : asked)
+        {
+          auto &q = questions[column_owner(k, n_ranks)];
+          q.insert(q.end(), k.begin(), k.end());
+        }
+      Outbox answers;
+      for (const auto &[rank, q] : exchange_records(state.comm, questions))
+        for (std::size_t i = 0; i < q.size(); i += nk)
+          {
+            Key k;
+            for (unsigned int d = 0; d < nk; ++d)
+              k[d] = static_cast<long long>(q[i + d]);
+            const std::size_t c = find(k);
+            auto             &a = answers[rank];
+            if (c == cols.size())
+              a.insert(a.end(), nf, std::numeric_limits<double>::quiet_NaN());
+            else
+              a.insert(a.end(),
+                       {cols[c].thickness,
+                        100. * (1. - cols[c].thickness / t0),
+                        cols[c].major,
+                        cols[c].minor,
+                        double(static_cast<int>(cols[c].zone))});
+          }
+      const Outbox              values = exchange_records(state.comm, answers);
+      std::array<VectorType, 5> owned;
+      for (auto &v : owned)
+        v.reinit(state.owned, state.comm);
+      std::map<unsigned int, std::size_t> next;
+      for (const auto &[dof, k] : asked)
+        {
+          const unsigned int o = column_owner(k, n_ranks);
+          const double      *v = &values.at(o)[nf * next[o]++];
+          if (!std::isnan(v[0]))
+            for (unsigned int f = 0; f < nf; ++f)
+              owned[f][dof] = v[f];
+        }
+      for (unsigned int f = 0; f < nf; ++f)
         {
           owned[f].compress(VectorOperation::insert);
           fields[f].reinit(state.owned, state.relevant, state.comm);
@@ -286,17 +274,92 @@ namespace formsolve
               {"safety_zone", &fields[4], 0}};
     }
 
+    namespace
+    {
+      /// Numbers per column in gathered_columns(): key, then the column.
+      template <int dim>
+      constexpr unsigned int packed_size = dim - 1 + 2 + dim + 9;
+
+      template <int dim>
+      void pack(const std::array<long long, dim - 1> &k,
+                const SheetColumn<dim>               &c,
+                std::vector<double>                  &out)
+      {
+        out.insert(out.end(), k.begin(), k.end());
+        out.push_back(c.reference_radius);
+        out.push_back(c.reference_angle);
+        for (unsigned int d = 0; d < dim; ++d)
+          out.push_back(c.mid[d]);
+        out.insert(out.end(),
+                   {c.thickness,
+                    c.major,
+                    c.minor,
+                    c.damage,
+                    double(static_cast<int>(c.zone)),
+                    double(c.rim),
+                    double(c.squeezed),
+                    c.top,
+                    c.bottom});
+      }
+
+      template <int dim>
+      SheetColumn<dim> unpack(const double *v)
+      {
+        SheetColumn<dim> c;
+        v += dim - 1;
+        c.reference_radius = *v++;
+        c.reference_angle  = *v++;
+        for (unsigned int d = 0; d < dim; ++d)
+          c.mid[d] = *v++;
+        c.thickness = *v++;
+        c.major     = *v++;
+        c.minor     = *v++;
+        c.damage    = *v++;
+        c.zone      = material::SafetyZone(static_cast<int>(*v++));
+        c.rim       = *v++ != 0.;
+        c.squeezed  = *v++ != 0.;
+        c.top       = *v++;
+        c.bottom    = *v++;
+        return c;
+      }
+    } // namespace
+
     template <int dim>
-    void SheetMeasures<dim>::write_csv(const std::string &directory,
+    std::vector<SheetColumn<dim>>
+    SheetMeasures<dim>::gathered_columns(const MPI_Comm comm) const
+    {
+      constexpr unsigned int size = packed_size<dim>;
+      std::vector<double>    mine;
+      for (std::size_t c = 0; c < cols.size(); ++c)
+        pack(keys[c], cols[c], mine);
+      std::map<Key, SheetColumn<dim>> all; // in the order of the keys
+      for (const auto &v : Utilities::MPI::gather(comm, mine, 0))
+        for (std::size_t i = 0; i < v.size(); i += size)
+          {
+            Key k;
+            for (unsigned int d = 0; d + 1 < dim; ++d)
+              k[d] = static_cast<long long>(v[i + d]);
+            all[k] = unpack<dim>(&v[i]);
+          }
+      std::vector<SheetColumn<dim>> out;
+      for (const auto &[k, c] : all)
+        out.push_back(c);
+      return out;
+    }
+
+    template <int dim>
+    void SheetMeasures<dim>::write_csv(const MPI_Comm     comm,
+                                       const std::string &directory,
                                        const std::string &name) const
     {
-      if (cols.empty())
-        return; // not rank 0
+      const auto all = gathered_columns(comm);
+      if (Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
       std::ostringstream f;
       f << "reference_radius,reference_angle,r,z,thickness,thinning_percent,"
            "major_strain,minor_strain,damage,zone,zone_name,rim\n";
       f.precision(8);
-      for (const auto &c : cols)
+      for (const auto &c : all)
         f << c.reference_radius << ',' << c.reference_angle << ','
           << (dim == 2 ? c.mid[0] : std::hypot(c.mid[0], c.mid[1])) << ','
           << c.mid[dim - 1] << ',' << c.thickness << ','

@@ -118,29 +118,11 @@ namespace formsolve
           found.push_back(SplitMeasure::forming_limit);
         }
 
-      // The neck is judged on rank 0, which holds the columns.
-      SplitEvent<dim>     neck;
-      std::vector<double> packed;
-      if (Utilities::MPI::this_mpi_process(comm) == 0)
+      // Every rank judges the neck alike, from the columns of all.
+      const SplitEvent<dim> neck = find_neck(sheet, travel, punch_force, comm);
+      if (!events[1].met() && neck.met())
         {
-          neck   = find_neck(sheet, travel, punch_force);
-          packed = {neck.travel,
-                    neck.reference_radius,
-                    neck.reference_angle,
-                    neck.value};
-          for (unsigned int d = 0; d < dim; ++d)
-            packed.push_back(neck.location[d]);
-        }
-      packed = Utilities::MPI::broadcast(comm, packed, 0);
-      if (!events[1].met() && packed[0] >= 0)
-        {
-          auto &e            = events[1];
-          e.travel           = packed[0];
-          e.reference_radius = packed[1];
-          e.reference_angle  = packed[2];
-          e.value            = packed[3];
-          for (unsigned int d = 0; d < dim; ++d)
-            e.location[d] = packed[4 + d];
+          events[1] = neck;
           found.push_back(SplitMeasure::neck);
         }
 
@@ -158,43 +140,64 @@ namespace formsolve
     template <int dim>
     SplitEvent<dim> SplitWatch<dim>::find_neck(const SheetMeasures<dim> &sheet,
                                                const double              travel,
-                                               const double punch_force)
+                                               const double   punch_force,
+                                               const MPI_Comm comm)
     {
-      const auto     &cols = sheet.columns();
-      const auto     &keys = sheet.column_keys();
-      SplitEvent<dim> neck;
+      namespace mpi    = Utilities::MPI;
+      const auto &cols = sheet.columns();
+      const auto &keys = sheet.column_keys();
       // The thinnest column that no two tools squeeze (an ironed wall thins
       // where the tools make it); of ties the first in the canonical order.
-      std::size_t thinnest = cols.size();
+      // It carries its thickness strain increment of the step (NaN: its
+      // thickness a step ago is not known) and its key.
+      double least = std::numeric_limits<double>::max();
+      for (const auto &c : cols)
+        if (!c.squeezed)
+          least = std::min(least, c.thickness);
+      least = mpi::min(least, comm);
+      Candidate<dim> thinnest;
       for (std::size_t c = 0; c < cols.size(); ++c)
-        if (!cols[c].squeezed &&
-            (thinnest == cols.size() ||
-             cols[c].thickness < cols[thinnest].thickness ||
-             (model::ties(cols[c].thickness, cols[thinnest].thickness) &&
-              model::precedes(cols[c].mid, cols[thinnest].mid))))
-          thinnest = c;
-      const double dtravel = travel - last_travel;
-      const auto   before  = thinnest < cols.size()
-                               ? last_thickness.find(keys[thinnest])
-                               : last_thickness.end();
-      if (before != last_thickness.end() && dtravel > 0 &&
+        if (!cols[c].squeezed && model::ties(cols[c].thickness, least) &&
+            (!thinnest.valid || model::precedes(cols[c].mid, thinnest.point)))
+          {
+            const auto   before = last_thickness.find(keys[c]);
+            const double own    = before == last_thickness.end()
+                                    ? std::numeric_limits<double>::quiet_NaN()
+                                    : std::log(before->second / cols[c].thickness);
+            thinnest            = {true,
+                                   cols[c].mid,
+                                   {own,
+                                    cols[c].reference_radius,
+                                    cols[c].reference_angle}};
+            thinnest.values.insert(thinnest.values.end(),
+                                   keys[c].begin(),
+                                   keys[c].end());
+          }
+      thinnest = first_in_order(comm, thinnest);
+
+      SplitEvent<dim> neck;
+      const double    dtravel = travel - last_travel;
+      const double    own     = thinnest.valid ? thinnest.values[0] : 0.;
+      if (thinnest.valid && !std::isnan(own) && dtravel > 0 &&
           punch_force < last_force)
         {
-          // Thickness strain increments of the step, positive thinning.
-          const double own =
-            std::log(before->second / cols[thinnest].thickness);
-          double       sum = 0;
-          unsigned int n   = 0;
+          Key at;
+          for (unsigned int d = 0; d + 1 < dim; ++d)
+            at[d] = static_cast<long long>(thinnest.values[3 + d]);
+          // Thickness strain increments of the step, positive thinning, of
+          // the columns 2 to 5 thicknesses away.
+          double sum = 0, n = 0;
           for (std::size_t c = 0; c < cols.size(); ++c)
             {
-              const double d =
-                SheetMeasures<dim>::distance(keys[c], keys[thinnest]);
-              const auto it = last_thickness.find(keys[c]);
+              const double d  = SheetMeasures<dim>::distance(keys[c], at);
+              const auto   it = last_thickness.find(keys[c]);
               if (d < 2 * t0 || d > 5 * t0 || it == last_thickness.end())
                 continue;
               sum += std::log(it->second / cols[c].thickness);
               ++n;
             }
+          sum = mpi::sum(sum, comm);
+          n   = mpi::sum(n, comm);
           // Neighbours that no longer thin: as localised as it gets.
           const double mean = n > 0 ? sum / n : 0.;
           const double localisation =
@@ -203,9 +206,9 @@ namespace formsolve
               localisation >= prm.neck_localisation)
             {
               neck.travel           = travel;
-              neck.reference_radius = cols[thinnest].reference_radius;
-              neck.reference_angle  = cols[thinnest].reference_angle;
-              neck.location         = cols[thinnest].mid;
+              neck.reference_radius = thinnest.values[1];
+              neck.reference_angle  = thinnest.values[2];
+              neck.location         = thinnest.point;
               neck.value            = localisation;
             }
         }

@@ -2,6 +2,7 @@
 
 #include <formsolve/model/cell_kinematics.h>
 #include <formsolve/model/dimensions.h>
+#include <formsolve/postprocess/column_owner.h>
 #include <formsolve/postprocess/through_thickness.h>
 
 #include <algorithm>
@@ -136,7 +137,7 @@ namespace formsolve
                     static_cast<unsigned long long>(r[dim])};
       }
 
-      /// Rank 0: the sums per footprint of every coarse planform cell, in an
+      /// The sums per footprint of every coarse planform cell, in an
       /// order that does not depend on the partition (the same result on any
       /// number of ranks).
       template <int dim>
@@ -168,7 +169,7 @@ namespace formsolve
         return trees;
       }
 
-      /// Rank 0: the maxima over the leaf columns (eq. 12a) and, in
+      /// The maxima over the leaf columns (eq. 12a) and, in
       /// @p through, the largest deciding column average through each
       /// footprint.
       template <int dim>
@@ -230,63 +231,88 @@ namespace formsolve
       }
     } // namespace
 
+    namespace
+    {
+      /// The largest column averages of all ranks and the largest height
+      /// error (collective; the same on every rank).
+      template <int dim>
+      ColumnDamage<dim> combined(const MPI_Comm           comm,
+                                 const ColumnDamage<dim> &mine)
+      {
+        std::vector<double> packed{mine.height_error,
+                                   mine.oyane.value,
+                                   mine.cockcroft_latham.value};
+        for (unsigned int d = 0; d < dim; ++d)
+          packed.push_back(mine.oyane.location[d]);
+        for (unsigned int d = 0; d < dim; ++d)
+          packed.push_back(mine.cockcroft_latham.location[d]);
+        ColumnDamage<dim> result;
+        for (const auto &v : Utilities::MPI::all_gather(comm, packed))
+          {
+            Point<dim> x, y;
+            for (unsigned int d = 0; d < dim; ++d)
+              x[d] = v[3 + d], y[d] = v[3 + dim + d];
+            result.height_error = std::max(result.height_error, v[0]);
+            take_larger(result.oyane, v[1], x);
+            take_larger(result.cockcroft_latham, v[2], y);
+          }
+        return result;
+      }
+    } // namespace
+
     template <int dim>
     ColumnDamage<dim>
     ThroughThicknessDamage<dim>::measure(const state::State<dim>        &state,
                                          const material::DamageCriteria &damage,
                                          const bool cell_values)
     {
-      constexpr unsigned int R = record_size<dim>();
-      const auto             all =
-        Utilities::MPI::gather(state.comm, local_records(state), 0);
-      ColumnDamage<dim>   result;
-      std::vector<double> packed, per_cell; // broadcast from rank 0
-      if (Utilities::MPI::this_mpi_process(state.comm) == 0)
+      constexpr unsigned int R   = record_size<dim>();
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(state.comm);
+      // Each cell's record goes to the rank that owns its coarse planform
+      // cell's column, where the whole column meets.
+      const std::vector<double> mine = local_records(state);
+      std::vector<unsigned int> owner(mine.size() / R);
+      Outbox                    out;
+      for (std::size_t r = 0; r < owner.size(); ++r)
         {
-          std::map<std::vector<double>, std::map<Node, double>> through;
-          result = column_maxima<dim>(footprint_sums<dim>(all),
-                                      damage,
-                                      state.prm.geometry.thickness,
-                                      through);
-          packed = {result.oyane.value,
-                    result.cockcroft_latham.value,
-                    result.height_error};
-          for (unsigned int d = 0; d < dim; ++d)
-            packed.push_back(result.oyane.location[d]);
-          for (unsigned int d = 0; d < dim; ++d)
-            packed.push_back(result.cockcroft_latham.location[d]);
-          if (cell_values)
-            for (const auto &v : all)
-              for (std::size_t i = 0; i < v.size(); i += R)
-                per_cell.push_back(
-                  through[std::vector<double>(&v[i], &v[i] + dim - 1)]
-                         [node_of<dim>(&v[i])]);
+          std::array<long long, dim - 1> key;
+          for (unsigned int d = 0; d + 1 < dim; ++d)
+            key[d] = static_cast<long long>(mine[R * r + d]);
+          owner[r] = column_owner(key, n_ranks);
+          out[owner[r]].insert(out[owner[r]].end(),
+                               mine.begin() + R * r,
+                               mine.begin() + R * (r + 1));
         }
-      packed             = Utilities::MPI::broadcast(state.comm, packed, 0);
-      result.oyane.value = packed[0];
-      result.cockcroft_latham.value = packed[1];
-      result.height_error           = packed[2];
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          result.oyane.location[d]            = packed[3 + d];
-          result.cockcroft_latham.location[d] = packed[3 + dim + d];
-        }
+      const Outbox received = exchange_records(state.comm, out);
+      std::vector<std::vector<double>> all;
+      for (const auto &[rank, v] : received)
+        all.push_back(v);
+      std::map<std::vector<double>, std::map<Node, double>> through;
+      const ColumnDamage<dim>                               result =
+        combined(state.comm,
+                 column_maxima<dim>(footprint_sums<dim>(all),
+                                    damage,
+                                    state.prm.geometry.thickness,
+                                    through));
       if (cell_values)
         {
-          // Every rank's slice, in the order of the gather.
-          per_cell = Utilities::MPI::broadcast(state.comm, per_cell, 0);
-          const auto counts = Utilities::MPI::all_gather(
-            state.comm,
-            state.tria.n_locally_owned_active_cells());
-          std::size_t offset = 0;
-          for (unsigned int p = 0;
-               p < Utilities::MPI::this_mpi_process(state.comm);
-               ++p)
-            offset += counts[p];
+          // The owners answer each record with its footprint's value.
+          Outbox answers;
+          for (const auto &[rank, v] : received)
+            for (std::size_t i = 0; i < v.size(); i += R)
+              answers[rank].push_back(
+                through[std::vector<double>(&v[i], &v[i] + dim - 1)]
+                       [node_of<dim>(&v[i])]);
+          const Outbox values = exchange_records(state.comm, answers);
+          std::map<unsigned int, std::size_t> next;
+          std::size_t                         r = 0;
           cells.reinit(state.tria.n_active_cells());
           for (const auto &cell : state.dof_handler.active_cell_iterators())
             if (cell->is_locally_owned())
-              cells[cell->active_cell_index()] = per_cell[offset++];
+              {
+                const unsigned int o             = owner[r++];
+                cells[cell->active_cell_index()] = values.at(o)[next[o]++];
+              }
         }
       return result;
     }

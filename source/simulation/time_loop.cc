@@ -321,7 +321,7 @@ namespace formsolve
           {
             std::ostringstream name;
             name << "sheet_" << p << "mm.csv";
-            sheet.write_csv(prm.output.directory, name.str());
+            sheet.write_csv(comm, prm.output.directory, name.str());
           }
       const double force = prm.geometry.symmetry_factor() *
                            stats.tool_force[state.tools.punch_index()][dim - 1];

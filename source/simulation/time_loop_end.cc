@@ -237,7 +237,7 @@ namespace formsolve
 
       summary.wall_time = seconds();
       sheet.measure(state, damage);
-      sheet.write_csv(prm.output.directory);
+      sheet.write_csv(comm, prm.output.directory);
       // Ears are the rim of a drawn cup: before draw-through the rim is
       // still the flange's, whose draw-in sheet.csv gives.
       if constexpr (dim == 3)
@@ -245,7 +245,7 @@ namespace formsolve
             summary.end_reason.rfind("drawn through", 0) == 0)
           {
             earing = postprocess::earing_profile(
-              sheet.columns(),
+              sheet.gathered_columns(comm),
               prm.geometry.model,
               prm.material.anisotropy.rolling_direction);
             postprocess::write_earing(earing, prm.output.directory);
@@ -317,8 +317,11 @@ namespace formsolve
         return;
       try
         {
-          // The columns of the last converged step, as rank 0 holds them.
-          sheet.write_csv(prm.output.directory);
+          // The columns of the last converged step, if rank 0 holds them
+          // all (one rank); on several ranks, sheet.csv of the last output
+          // step stays (collective calls may hang now).
+          if (Utilities::MPI::n_mpi_processes(comm) == 1)
+            sheet.write_csv(MPI_COMM_SELF, prm.output.directory);
           Utilities::System::MemoryStats mem;
           Utilities::System::get_memory_stats(mem);
           summary.peak_memory_kb          = mem.VmHWM;

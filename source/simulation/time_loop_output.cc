@@ -25,6 +25,9 @@ namespace formsolve
                           step_solver.forming_system().penalty_factors(),
                           prm.contact.search_distance);
       sheet.measure(state, damage);
+      // sheet.csv at every output step: after an error on several ranks,
+      // which allows no collective call, the last one stays.
+      sheet.write_csv(comm, prm.output.directory);
       auto nodal = contact_fields.scalars();
       for (const auto &f : sheet.nodal_fields(state))
         nodal.push_back(f);

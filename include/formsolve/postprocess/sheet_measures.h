@@ -6,14 +6,17 @@
 // The sheet is a set of node columns through the thickness, identified by
 // their reference planform position (R in axisymmetry, (X, Y) in 3-D). Each
 // rank measures its surface nodes and the cells cut by the reference
-// mid-plane; rank 0 assembles the columns; the results per column go back to
-// all ranks for the VTU fields.
+// mid-plane and sends each record to the rank that owns its column
+// (column_owner.h); the owners assemble the columns, and the summary follows
+// by reductions. No rank holds the whole sheet, except rank 0 when sheet.csv
+// is written.
 #pragma once
 
 #include <deal.II/base/point.h>
 
 #include <formsolve/material/damage.h>
 #include <formsolve/material/forming_limit.h>
+#include <formsolve/postprocess/column_owner.h>
 #include <formsolve/postprocess/vtu_writer.h>
 #include <formsolve/state/state.h>
 
@@ -77,25 +80,33 @@ namespace formsolve
 
       SheetMeasures(const parameters::Run &prm);
 
-      /// Measures the sheet of @p state (collective). The summary is valid on
-      /// every rank, the columns on rank 0.
+      /// Measures the sheet of @p state (collective), once per step: a
+      /// second call for the same step and mesh returns at once. The summary
+      /// is valid on every rank; each rank holds the columns it owns.
       void measure(const state::State<dim>        &state,
                    const material::DamageCriteria &damage);
 
-      const SheetSummary<dim>             &summary() const { return sum; }
+      const SheetSummary<dim> &summary() const { return sum; }
+      /// The columns this rank owns, in the order of their keys.
       const std::vector<SheetColumn<dim>> &columns() const { return cols; }
       const material::FormingLimit        &forming_limit() const { return flc; }
+
+      /// Every column, in the order of their keys, on rank 0 (collective;
+      /// empty elsewhere): for the files written at output steps.
+      std::vector<SheetColumn<dim>> gathered_columns(const MPI_Comm comm) const;
 
       /// Nodal fields thickness, thinning, major_strain, minor_strain,
       /// safety_zone for the VTU files (collective; valid until the next
       /// call).
       std::vector<NodalScalar> nodal_fields(const state::State<dim> &state);
 
-      /// sheet.csv (one row per column) and flc.csv (the limit curve), rank 0.
-      void write_csv(const std::string &directory,
+      /// sheet.csv (one row per column) and flc.csv (the limit curve),
+      /// written by rank 0 (collective).
+      void write_csv(const MPI_Comm     comm,
+                     const std::string &directory,
                      const std::string &name = "sheet.csv") const;
 
-      /// The columns' planform keys (rank 0, in the order of columns()).
+      /// The planform keys of columns().
       const std::vector<Key> &column_keys() const { return keys; }
 
       /// The planform key of a reference position.
@@ -109,42 +120,56 @@ namespace formsolve
       /// Corners of a cell's face in the planform.
       static constexpr unsigned int n_corners = dim == 2 ? 2 : 4;
 
-      /// One rank's measurements, flat vectors of doubles gathered on rank 0.
-      /// nodes: key, side (0 bottom, 1 top, 2 rim), whether a tool presses
-      /// on it, current position (dim);
-      /// cells: corner keys, corner mid-plane points, major, minor, normal;
-      /// damages: corner keys, largest deciding damage in the cell.
-      struct Records
+      /// Record kinds in the flat vectors sent to a column's owner, each
+      /// starting with its key: a surface or rim node (side 0 bottom, 1 top,
+      /// 2 rim; whether a tool presses on it; current position), a corner of
+      /// a cell cut by the reference mid-plane (its mid-plane point, major,
+      /// minor, normal), a cell's largest deciding damage at a corner.
+      enum Kind
       {
-        std::vector<double> nodes, cells, damages;
+        node_record,
+        corner_record,
+        damage_record
       };
-      /// This rank's surface nodes, the cells cut by the reference mid-plane
-      /// and every cell's damage.
-      Records local_records(const state::State<dim>        &state,
-                            const material::DamageCriteria &damage) const;
-      /// The nodes part of local_records().
-      std::vector<double> node_records(const state::State<dim> &state) const;
-      /// Rank 0: cols and keys from the records of all ranks
-      /// (source/postprocess/sheet_columns.cc).
-      void assemble_columns(const std::vector<std::vector<double>> &nodes,
-                            const std::vector<std::vector<double>> &cells,
-                            const std::vector<std::vector<double>> &damages);
-      /// Rank 0: every column's thickness replaced by the mean of the
-      /// centre thicknesses of the mid-surface cells at it (Q2 mid-edge
-      /// columns, at no cell corner, keep their own).
+      /// This rank's records, by the rank that owns each column; the corner
+      /// keys of its cells cut by the mid-plane, in the order their corner
+      /// records were sent.
+      Outbox local_records(const state::State<dim>                 &state,
+                           const material::DamageCriteria          &damage,
+                           std::vector<std::array<Key, n_corners>> &mid) const;
+      /// The node records of local_records().
+      void node_records(const state::State<dim> &state, Outbox &out) const;
+      /// cols and keys of the columns this rank owns from the records sent
+      /// to it (source/postprocess/sheet_columns.cc); the keys of the corner
+      /// records each rank sent, in order.
+      void assemble_columns(const Outbox                             &received,
+                            std::map<unsigned int, std::vector<Key>> &corners);
+      /// Every column's thickness replaced by the mean of the centre
+      /// thicknesses of the mid-surface cells at it (Q2 mid-edge columns,
+      /// at no cell corner, keep their own): the cells' ranks ask the owners
+      /// for their corners' thicknesses and send the centre's back.
       void cell_centre_thickness(
-        const std::vector<std::array<Key, n_corners>> &mid_cells);
-      /// Rank 0: the summary of cols (marks the rim where no rim nodes
-      /// exist).
-      SheetSummary<dim> summarise();
+        const MPI_Comm                                  comm,
+        const std::vector<std::array<Key, n_corners>>  &mid,
+        const std::map<unsigned int, std::vector<Key>> &corners);
+      /// The summary of all ranks' columns (collective; marks the rim where
+      /// no rim nodes exist).
+      SheetSummary<dim> summarise(const MPI_Comm comm);
+      /// The rim radius and draw-in of the summary (collective).
+      void rim_measures(const MPI_Comm comm, SheetSummary<dim> &s) const;
+      /// The index in cols of @p k, or cols.size().
+      std::size_t find(const Key &k) const;
+
+      /// The step and number of DoFs last measured (measure() once a step).
+      std::pair<unsigned int, dealii::types::global_dof_index> measured{~0u, 0};
 
       double t0;
       /// The blank's diagonal: its corner's angle from x (degrees).
       double                        diagonal;
       material::FormingLimit        flc;
       SheetSummary<dim>             sum;
-      std::vector<SheetColumn<dim>> cols; // rank 0
-      std::vector<Key>              keys; // of cols
+      std::vector<SheetColumn<dim>> cols; // owned by this rank
+      std::vector<Key>              keys; // of cols, increasing
       std::array<VectorType, 5>     fields;
     };
   } // namespace postprocess

@@ -80,11 +80,13 @@ namespace formsolve
       void load(const std::map<std::string, std::string> &values);
 
     private:
-      /// Rank 0: the neck's event at this step (travel < 0: none), and the
-      /// thickness of every column kept for the next step.
+      /// The neck's event at this step (travel < 0: none; collective, the
+      /// same on every rank), and the thickness of every column this rank
+      /// owns kept for the next step.
       SplitEvent<dim> find_neck(const SheetMeasures<dim> &sheet,
                                 const double              travel,
-                                const double              punch_force);
+                                const double              punch_force,
+                                const MPI_Comm            comm);
 
       parameters::Split              prm;
       double                         t0;
@@ -93,7 +95,7 @@ namespace formsolve
       double                         last_travel = 0;
       double                         last_force  = 0;
       using Key = typename SheetMeasures<dim>::Key;
-      std::map<Key, double> last_thickness; // rank 0, by column
+      std::map<Key, double> last_thickness; // owned columns, by key
     };
   } // namespace postprocess
 } // namespace formsolve
