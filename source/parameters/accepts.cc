@@ -49,17 +49,13 @@ namespace formsolve
       }
     } // namespace
 
-    Accepts number(const std::string &unit,
-                   const double       lower,
-                   const double       upper)
+    Accepts
+    number(const std::string &unit, const double lower, const double upper)
     {
       Accepts a;
-      a.pattern = std::make_shared<Double>(lower <= -unbounded
-                                             ? Double::min_double_value
-                                             : lower,
-                                           upper >= unbounded
-                                             ? Double::max_double_value
-                                             : upper);
+      a.pattern = std::make_shared<Double>(
+        lower <= -unbounded ? Double::min_double_value : lower,
+        upper >= unbounded ? Double::max_double_value : upper);
       a.words          = "a number" + range(lower, upper) + in_unit(unit);
       a.takes_decimals = true;
       return a;
@@ -70,21 +66,20 @@ namespace formsolve
                     const unsigned int max_count,
                     const double       lower)
     {
-      Accepts a;
-      const Double each(lower <= -unbounded ? Double::min_double_value
-                                            : lower);
-      a.pattern = std::make_shared<List>(
-        each,
-        min_count,
-        max_count == 0 ? List::max_int_value : max_count,
-        ",");
-      const std::string count =
-        max_count == 0           ? "numbers"
-        : min_count == max_count ? std::to_string(min_count) + " numbers"
-                                 : std::to_string(min_count) + " to " +
-                                     std::to_string(max_count) + " numbers";
-      a.words = count + range(lower, unbounded) + ", comma-separated" +
-                in_unit(unit);
+      Accepts      a;
+      const Double each(lower <= -unbounded ? Double::min_double_value : lower);
+      a.pattern =
+        std::make_shared<List>(each,
+                               min_count,
+                               max_count == 0 ? List::max_int_value : max_count,
+                               ",");
+      const std::string count = max_count == 0 ? "numbers"
+                                : min_count == max_count
+                                  ? std::to_string(min_count) + " numbers"
+                                  : std::to_string(min_count) + " to " +
+                                      std::to_string(max_count) + " numbers";
+      a.words =
+        count + range(lower, unbounded) + ", comma-separated" + in_unit(unit);
       return a;
     }
 
@@ -92,10 +87,10 @@ namespace formsolve
     {
       Accepts a;
       a.pattern = std::make_shared<Integer>(lower, upper);
-      a.words   = "a whole number" +
-                range(lower,
-                      upper == std::numeric_limits<int>::max() ? unbounded
-                                                                : upper);
+      a.words =
+        "a whole number" +
+        range(lower,
+              upper == std::numeric_limits<int>::max() ? unbounded : upper);
       return a;
     }
 

@@ -5,10 +5,10 @@
 #include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/parameters.h>
 
+#include "check.h"
+
 #include <cmath>
 #include <limits>
-
-#include "check.h"
 
 using namespace formsolve;
 
@@ -33,10 +33,10 @@ int main()
               1 / 3.,
               0);
 
-  dealii::ParameterHandler     prm;
-  parameters::Run              run;
-  const parameters::Run        defaults;
-  parameters::Declarations     d(prm);
+  dealii::ParameterHandler prm;
+  parameters::Run          run;
+  const parameters::Run    defaults;
+  parameters::Declarations d(prm);
   run.declare(d);
   run.tools.declare_additional(d, {"Pad"});
 
@@ -96,20 +96,14 @@ int main()
                               "  end\n"
                               "end\n");
   test::close("number read", run.geometry.thickness, 1.25, 0);
-  test::close("choice read",
-              run.geometry.model == model::Model::quarter,
-              1,
-              0);
+  test::close("choice read", run.geometry.model == model::Model::quarter, 1, 0);
   test::close("optional number read", run.material.oyane_a, 0.3, 0);
   test::close("list read",
               run.material.anisotropy.r_values.size() == 3 &&
                 run.material.anisotropy.r_values[2] == 1.8,
               1,
               0);
-  test::close("table read",
-              run.material.forming_limit_table.size(),
-              2,
-              0);
+  test::close("table read", run.material.forming_limit_table.size(), 2, 0);
   test::close("selection of measures read",
               !run.split.by_forming_limit && run.split.by_neck &&
                 !run.split.by_fracture,
