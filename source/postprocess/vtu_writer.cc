@@ -167,33 +167,36 @@ namespace formsolve
                                const double             time,
                                const DoFHandler<dim>   &dof_handler,
                                const Mapping<dim>      &mapping,
-                               const OutputFields<dim> &fields)
+                               const OutputFields<dim> &fields,
+                               const bool               section,
+                               const bool               revolved)
     {
       const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
       const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
-      {
-        DataOut<dim>                                 out;
-        std::vector<Vector<float>>                   cell_data;
-        std::vector<std::unique_ptr<Component<dim>>> scalars;
-        std::vector<std::unique_ptr<FrameAxis<dim>>> axes;
-        add_fields(out, dof_handler, fields, cell_data, scalars, axes);
-        out.set_flags(fast());
-        out.build_patches(mapping,
-                          dof_handler.get_fe().degree,
-                          DataOut<dim>::curved_inner_cells);
-        records.emplace_back(
-          time,
-          write_vtu_atomically(out, prm.directory, "solution", step, comm));
-        if (root)
-          {
-            write_atomically(prm.directory + "/solution.pvd",
-                             [&](std::ostream &f) {
-                               DataOutBase::write_pvd_record(f, records);
-                             });
-          }
-      }
+      if (section)
+        {
+          DataOut<dim>                                 out;
+          std::vector<Vector<float>>                   cell_data;
+          std::vector<std::unique_ptr<Component<dim>>> scalars;
+          std::vector<std::unique_ptr<FrameAxis<dim>>> axes;
+          add_fields(out, dof_handler, fields, cell_data, scalars, axes);
+          out.set_flags(fast());
+          out.build_patches(mapping,
+                            dof_handler.get_fe().degree,
+                            DataOut<dim>::curved_inner_cells);
+          records.emplace_back(
+            time,
+            write_vtu_atomically(out, prm.directory, "solution", step, comm));
+          if (root)
+            {
+              write_atomically(prm.directory + "/solution.pvd",
+                               [&](std::ostream &f) {
+                                 DataOutBase::write_pvd_record(f, records);
+                               });
+            }
+        }
       if constexpr (dim == 2)
-        if (prm.revolved_copy)
+        if (revolved)
           {
             // One subdivision, no curved cells: the patch vertices are the
             // deformed ones, which the revolution needs.

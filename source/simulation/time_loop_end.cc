@@ -231,8 +231,8 @@ namespace formsolve
     template <int dim>
     void TimeLoop<dim>::finish(RunSummary &summary)
     {
-      if (prm.output.interval > 0 && last_output_step != int(state.step))
-        write_output();
+      if (prm.output.interval > 0)
+        write_output(/*last=*/true);
       save_checkpoint(summary);
 
       summary.wall_time = seconds();

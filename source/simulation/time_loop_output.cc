@@ -14,8 +14,13 @@ namespace formsolve
     using namespace dealii;
 
     template <int dim>
-    void TimeLoop<dim>::write_output()
+    void TimeLoop<dim>::write_output(const bool last)
     {
+      const bool section  = last_output_step != int(state.step);
+      const bool revolved = dim == 2 && prm.output.revolved_copy &&
+                            (prm.output.revolved_every_output ? section : last);
+      if (!section && !revolved)
+        return;
       TimerOutput::Scope t(timer, "output");
       // Output and checkpoints build buffers of the size of the state: free
       // the factors first, so that they do not add to the run's peak.
@@ -47,12 +52,15 @@ namespace formsolve
                     state.time,
                     state.dof_handler,
                     *state.mapping,
-                    f);
-      tool_writer->write(state.step,
-                         state.time,
-                         state.tools,
-                         tool_extent(),
-                         comm);
+                    f,
+                    section,
+                    revolved);
+      if (section)
+        tool_writer->write(state.step,
+                           state.time,
+                           state.tools,
+                           tool_extent(),
+                           comm);
       last_output_step = state.step;
     }
 
@@ -86,8 +94,8 @@ namespace formsolve
       return e;
     }
 
-#define INSTANTIATE(dim)                                       \
-  template void                 TimeLoop<dim>::write_output(); \
+#define INSTANTIATE(dim)                                                 \
+  template void                 TimeLoop<dim>::write_output(const bool); \
   template tools::SurfaceExtent TimeLoop<dim>::tool_extent() const;
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE

@@ -1,5 +1,6 @@
 """The revolved 3-D copy of an axisymmetric run (Output/Revolved copy), read
-back with VTK: vector fields have 3 components, and its volume is the
+back with VTK: one with the last section file (or one per section file with
+Revolved every output); vector fields have 3 components, and its volume is the
 section's volume swept through the revolved angle. A bilinear section cell
 swept between two half-planes dtheta apart spans sin(dtheta) int r dA, so
 with n segments the revolved mesh holds n sin(dtheta) / (2 pi) times the
@@ -16,7 +17,15 @@ angle = float(re.search(r"set Revolved angle\s*=\s*([0-9.eE+-]+)",
                         open(os.path.join(out, "parameters.prm")).read()).group(1))
 datasets = ET.parse(os.path.join(out, "revolved.pvd")).getroot().findall(".//DataSet")
 solutions = ET.parse(os.path.join(out, "solution.pvd")).getroot().findall(".//DataSet")
-assert len(datasets) == len(solutions) >= 2, "one revolved copy per section file"
+every = re.search(r"set Revolved every output\s*=\s*true",
+                  open(os.path.join(out, "parameters.prm")).read())
+if every:
+    assert len(datasets) == len(solutions) >= 2, "one revolved copy per section file"
+else:
+    # Written with the last section file only.
+    assert len(solutions) >= 2 and len(datasets) == 1, "one revolved copy, with the last section file"
+    step = lambda d: re.search(r"_(\d+)\.pvtu$", d.get("file")).group(1)
+    assert step(datasets[0]) == step(solutions[-1]), "the revolved copy is of the last step"
 reader = vtk.vtkXMLPUnstructuredGridReader()
 reader.SetFileName(os.path.join(out, datasets[-1].get("file")))
 reader.Update()

@@ -73,8 +73,7 @@ namespace formsolve
           for (unsigned int d = 0; d < dim; ++d)
             c.point[d] = p[1 + d];
           c.values.assign(p.begin() + 1 + dim, p.end());
-          if (c.valid &&
-              (!best.valid || model::precedes(c.point, best.point)))
+          if (c.valid && (!best.valid || model::precedes(c.point, best.point)))
             best = c;
         }
       return best;

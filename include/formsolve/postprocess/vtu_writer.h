@@ -49,13 +49,16 @@ namespace formsolve
     public:
       explicit VtuWriter(const parameters::Output &p);
 
-      /// Writes solution_<step>.vtu/.pvtu and rewrites solution.pvd (and the
-      /// revolved copy, if asked for and dim = 2).
+      /// Writes solution_<step>.vtu/.pvtu and rewrites solution.pvd if
+      /// @p section, the revolved copy (revolved.pvd) if @p revolved and
+      /// dim = 2.
       void write(const unsigned int             step,
                  const double                   time,
                  const dealii::DoFHandler<dim> &dof_handler,
                  const dealii::Mapping<dim>    &mapping,
-                 const OutputFields<dim>       &fields);
+                 const OutputFields<dim>       &fields,
+                 const bool                     section,
+                 const bool                     revolved);
 
       /// The (time, file) records of solution.pvd and revolved.pvd, for
       /// checkpoints.

@@ -174,9 +174,10 @@ namespace formsolve
       void        prepare_output_directory();
       /// Adapt the mesh; logs a row of refinement.csv. Whether it changed.
       bool adapt();
-      /// solution_<step> and tools_<step>
+      /// solution_<step> and tools_<step> (once a step), and the revolved
+      /// copy with it or, if @p last, with the last output only
       /// (source/simulation/time_loop_output.cc).
-      void write_output();
+      void write_output(const bool last = false);
       /// How far the tools' unbounded faces and walls are drawn.
       tools::SurfaceExtent tool_extent() const;
       /// Holder release and draw-through; the reason to end the run, or "".
