@@ -16,7 +16,8 @@ LAYERS = [
     ["geometry", "tools", "material"],  # the blank, the tools, the point law
     ["contact"],  # pairs, contact law, penalty strategies
     ["state"],  # what a step changes: State, quadrature history
-    ["solver", "refinement"],  # operators, Newton, linear solves; adaptation
+    ["newton", "linear"],  # Newton on a NonlinearProblem; linear solves
+    ["forming", "refinement"],  # the forming operators and step; adaptation
     ["postprocess"],  # measures, history.csv, VTU
     ["simulation"],  # the time loop
 ]

@@ -16,7 +16,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <formsolve/solver/cell_scatter.h>
+#include <formsolve/forming/cell_scatter.h>
 
 #include "check.h"
 

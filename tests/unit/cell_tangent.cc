@@ -15,8 +15,8 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <formsolve/forming/cell_tangent.h>
 #include <formsolve/model/cell_kinematics.h>
-#include <formsolve/solver/cell_tangent.h>
 
 #include "check.h"
 

@@ -5,7 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
-#include <formsolve/solver/condition_estimate.h>
+#include <formsolve/linear/condition_estimate.h>
 
 #include "check.h"
 #include "penalty_operator.h"

@@ -8,8 +8,8 @@
 // change owner).
 #include <deal.II/base/mpi.h>
 
+#include <formsolve/forming/assembler.h>
 #include <formsolve/refinement/adapt.h>
-#include <formsolve/solver/assembler.h>
 
 #include "check.h"
 #include "small_blank.h"

@@ -12,8 +12,8 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <formsolve/solver/assembler.h>
-#include <formsolve/solver/dual_stress.h>
+#include <formsolve/forming/assembler.h>
+#include <formsolve/forming/dual_stress.h>
 
 #include "check.h"
 #include "small_blank.h"

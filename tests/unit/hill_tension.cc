@@ -20,11 +20,11 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
+#include <formsolve/forming/assembler.h>
+#include <formsolve/linear/mumps_solver.h>
 #include <formsolve/material/damage.h>
 #include <formsolve/material/hill_orientation.h>
-#include <formsolve/solver/assembler.h>
-#include <formsolve/solver/mumps_solver.h>
-#include <formsolve/solver/newton_solver.h>
+#include <formsolve/newton/newton_solver.h>
 #include <formsolve/state/history_update.h>
 #include <formsolve/state/state.h>
 

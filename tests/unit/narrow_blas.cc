@@ -12,7 +12,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <formsolve/solver/mumps_direct.h>
+#include <formsolve/linear/mumps_direct.h>
 
 #include "check.h"
 #include "penalty_operator.h"

@@ -7,7 +7,7 @@
 // root is reached in the second iteration; |r| at the iterates never grows.
 #include <deal.II/base/mpi.h>
 
-#include <formsolve/solver/newton_solver.h>
+#include <formsolve/newton/newton_solver.h>
 
 #include "check.h"
 #include "toy_problem.h"

@@ -17,7 +17,7 @@
 //    and after fewer in at least one case.
 #include <deal.II/base/mpi.h>
 
-#include <formsolve/solver/newton_solver.h>
+#include <formsolve/newton/newton_solver.h>
 
 #include "check.h"
 #include "toy_problem.h"

@@ -12,7 +12,7 @@
 // - iteration 3: the exact direction -x, to the root with either memory.
 #include <deal.II/base/mpi.h>
 
-#include <formsolve/solver/newton_solver.h>
+#include <formsolve/newton/newton_solver.h>
 
 #include "check.h"
 #include "toy_problem.h"

@@ -4,8 +4,8 @@
 // the longest descending trial on scalar potentials; the nonmonotone merit
 // reference; Deuflhard's error estimate; the inexact linear tolerance; the
 // Picard schedule; and what follows a stall.
-#include <formsolve/solver/line_search.h>
-#include <formsolve/solver/newton_steps.h>
+#include <formsolve/newton/line_search.h>
+#include <formsolve/newton/newton_steps.h>
 
 #include "check.h"
 

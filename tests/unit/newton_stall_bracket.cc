@@ -16,7 +16,7 @@
 //    which reaches the root x = -1.
 #include <deal.II/base/mpi.h>
 
-#include <formsolve/solver/newton_solver.h>
+#include <formsolve/newton/newton_solver.h>
 
 #include "check.h"
 #include "toy_problem.h"

@@ -6,8 +6,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
 
+#include <formsolve/forming/assembler.h>
 #include <formsolve/postprocess/sheet_measures.h>
-#include <formsolve/solver/assembler.h>
 
 #include "check.h"
 #include "small_blank.h"

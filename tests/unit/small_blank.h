@@ -5,8 +5,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <formsolve/forming/assembler.h>
 #include <formsolve/parameters/parameters.h>
-#include <formsolve/solver/assembler.h>
 #include <formsolve/state/state.h>
 
 namespace test

@@ -2,7 +2,7 @@
 // Max cutbacks per step, from the step actually tried, grows after easy steps
 // without cuts or after Regrowth after steps hard ones in a row, never above
 // the nominal time step.
-#include <formsolve/solver/step_control.h>
+#include <formsolve/newton/step_control.h>
 
 #include "check.h"
 

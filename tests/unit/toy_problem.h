@@ -6,7 +6,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <formsolve/solver/newton_solver.h>
+#include <formsolve/newton/newton_solver.h>
 
 namespace test
 {

@@ -4,10 +4,10 @@
 #pragma once
 
 #include <formsolve/contact/contact_statistics.h>
+#include <formsolve/forming/step_solver.h>
 #include <formsolve/postprocess/sheet_measures.h>
 #include <formsolve/postprocess/statistics_table.h>
 #include <formsolve/postprocess/through_thickness.h>
-#include <formsolve/solver/step_solver.h>
 #include <formsolve/state/sheet_integrals.h>
 #include <formsolve/state/state.h>
 

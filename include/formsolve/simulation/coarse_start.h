@@ -4,7 +4,7 @@
 // (doc/theory.md section 8a).
 #pragma once
 
-#include <formsolve/solver/step_solver.h>
+#include <formsolve/forming/step_solver.h>
 #include <formsolve/state/history_update.h>
 #include <formsolve/state/state.h>
 

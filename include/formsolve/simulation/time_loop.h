@@ -9,6 +9,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <formsolve/forming/assembler.h>
+#include <formsolve/forming/step_solver.h>
 #include <formsolve/material/damage.h>
 #include <formsolve/material/rigid_viscoplastic.h>
 #include <formsolve/postprocess/contact_fields.h>
@@ -23,8 +25,6 @@
 #include <formsolve/postprocess/vtu_writer.h>
 #include <formsolve/refinement/mesh_refinement.h>
 #include <formsolve/simulation/checkpoint.h>
-#include <formsolve/solver/assembler.h>
-#include <formsolve/solver/step_solver.h>
 #include <formsolve/state/state.h>
 
 #include <chrono>

@@ -1,0 +1,103 @@
+// Contact of the sheet with the rigid tools as one operator of the step
+// (doc/theory.md, section 6): the pairs at a trial velocity, the penalty
+// factors from the body system, and the contact forces and stiffness added
+// to (or taken out of) the system. It works on the state's contact set and
+// contact state, which refinement transfers and checkpoints save, and owns
+// the search, the strategy's factors and what changed between iterates.
+#pragma once
+
+#include <deal.II/base/timer.h>
+
+#include <formsolve/contact/contact_search.h>
+#include <formsolve/contact/penalty_strategy.h>
+#include <formsolve/forming/assembler.h>
+#include <formsolve/state/state.h>
+
+#include <string>
+#include <vector>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    template <int dim>
+    class ContactOperator
+    {
+    public:
+      ContactOperator(const parameters::Run         &prm,
+                      state::State<dim>             &state,
+                      contact::PenaltyStrategy<dim> &strategy,
+                      dealii::TimerOutput           &timer);
+
+      /// A new mesh: no factors, no memory of the last search.
+      void reinit();
+      /// A Newton solve of a step begins.
+      void begin_solve();
+
+      /// The pairs at the ghosted velocity @p v with the tools at their
+      /// current velocities, for a step of @p dt; their status enters the
+      /// contact state.
+      void search(const VectorType &v, const double dt);
+      /// The step's predictor @p v corrected where it would lift nodes in
+      /// contact off their tools (Nonlinear solver/Predictor = keep
+      /// contact); @p ghost: a ghosted vector to search with.
+      void predict(VectorType &v, VectorType &ghost, const double dt);
+
+      /// Whether the factors are estimated from the body system (K_b, r_b)
+      /// at every accepted iterate, rather than once per set of pairs.
+      bool reads_body_system() const { return strategy.needs_system(); }
+      /// Whether there are factors for the current pairs (collective).
+      bool has_factors() const;
+      /// Factors for the current pairs from the body system.
+      void estimate(const VectorType &r_b,
+                    const MatrixType &K_b,
+                    const double      dt,
+                    const bool        predictor);
+      /// Whether the strategy keeps the factors of the last estimate at this
+      /// iterate (so that the body system need not be read).
+      bool holds_factors(const bool predictor) const;
+      /// The strategy's bound near convergence: whether it tightened the
+      /// factors (collective); if so, the next estimate is not frozen.
+      bool tighten();
+      /// The solve converged: the strategy sees the body system.
+      void
+      converged(const VectorType &r_b, const MatrixType &K_b, const double dt);
+      bool reads_converged_system() const
+      {
+        return strategy.reads_converged_system();
+      }
+
+      /// Contact forces and stiffness of the pairs with the current factors,
+      /// times @p sign, into what is given (either may be null).
+      void add(MatrixType  *matrix,
+               VectorType  *residual,
+               const double sign,
+               const double dt,
+               const bool   newton);
+
+      /// Whether the set of active pairs changed since the last call
+      /// (collective); locked pairs (chatter guard) count as active.
+      bool changed();
+
+      const std::vector<double> &factors() const { return epsilon; }
+      /// For the iteration log: the strategy's summary and the pairs each
+      /// tool closed and opened since the last call of changed().
+      std::string info() const;
+
+    private:
+      void find_pairs(const VectorType &v, const double dt);
+      /// The pairs each tool closed and opened since the last call (log).
+      void count_changes();
+
+      const parameters::Run         &prm;
+      state::State<dim>             &state;
+      contact::PenaltyStrategy<dim> &strategy;
+      dealii::TimerOutput           &timer;
+      contact::ContactSearch<dim>    search_;
+      std::vector<double>            epsilon;
+      std::vector<bool>              last_active;
+      std::vector<char>              last_record_status;
+      std::vector<unsigned int>      closed, opened;
+    };
+  } // namespace solver
+} // namespace formsolve

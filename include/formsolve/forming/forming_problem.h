@@ -1,0 +1,175 @@
+// The discrete problem of one step, as Newton sees it (a NonlinearProblem):
+// the sheet's body operator, the contact operator and the force equations of
+// the tools under force control, which border the system with each such
+// tool's velocity as one more unknown. At every evaluation data flows one
+// way: contact search -> body residual (and tangent) -> penalty factors ->
+// contact terms -> force equations; the linear solve takes the result.
+#pragma once
+
+#include <deal.II/base/timer.h>
+
+#include <formsolve/contact/penalty_strategy.h>
+#include <formsolve/forming/assembler.h>
+#include <formsolve/forming/body_operator.h>
+#include <formsolve/forming/contact_operator.h>
+#include <formsolve/forming/force_equations.h>
+#include <formsolve/linear/factor_reuse.h>
+#include <formsolve/linear/linear_solver.h>
+#include <formsolve/newton/nonlinear_problem.h>
+#include <formsolve/state/state.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace formsolve
+{
+  namespace solver
+  {
+    template <int dim>
+    class FormingProblem : public NonlinearProblem
+    {
+    public:
+      FormingProblem(const parameters::Run         &prm,
+                     state::State<dim>             &state,
+                     const Assembler<dim>          &assembler,
+                     contact::PenaltyStrategy<dim> &strategy,
+                     dealii::TimerOutput           &timer);
+
+      /// Matrices, vectors and linear solver for the state's current mesh.
+      void reinit();
+      /// A step of @p dt begins (statistics of the step are reset).
+      void begin_step(const double dt);
+      /// A Newton solve of the step begins, from the state's velocity and
+      /// force-controlled tools' velocities: the state's velocity is the
+      /// iterate.
+      void begin_solve();
+      /// The solve has converged: the strategy sees the body system of the
+      /// converged iterate (contact::PenaltyStrategy::converged).
+      void end_solve();
+      /// The step's predictor @p v (the previous step's velocity, tools under
+      /// force control at their last velocities), corrected at the contact
+      /// nodes by Nonlinear solver/Predictor (contact::keep_contact). Call
+      /// after begin_step().
+      void predict(VectorType &v);
+
+      /// Factors of the pairs of the last assembly (one per pair).
+      const std::vector<double> &penalty_factors() const
+      {
+        return contact.factors();
+      }
+      /// Velocity of force control j along its direction at the accepted
+      /// iterate (mm/s).
+      double control_velocity(const unsigned int j) const
+      {
+        return forces.velocity(j);
+      }
+      unsigned int max_linear_iterations() const { return step_max_linear; }
+      double       condition_estimate() const { return step_condition; }
+      /// Matrix assemblies since the start (line-search trials assemble the
+      /// residual only).
+      unsigned long matrix_assemblies() const { return n_matrix_assemblies; }
+      /// Numeric factorisations of the direct solver since the start.
+      unsigned long factorisations() const { return n_factorisations; }
+      /// Frees the linear solver's factors (LinearSolver::release_factors).
+      void release_factors()
+      {
+        if (linear_solver)
+          linear_solver->release_factors();
+      }
+      /// Memory of the last MUMPS factorisation, all ranks (MB; 0 if none).
+      double factorisation_memory_mb() const
+      {
+        return linear_solver ? linear_solver->factorisation_memory_mb() : 0.;
+      }
+      /// Entries of the last MUMPS factors (0 if none).
+      double factor_entries() const
+      {
+        return linear_solver ? linear_solver->factor_entries() : 0.;
+      }
+
+      // NonlinearProblem
+      Evaluation  evaluate(const double        alpha,
+                           const Linearisation kind,
+                           const bool          tangent_now) override;
+      Direction   solve(const double tolerance) override;
+      Accepted    accept() override;
+      bool        tighten(Evaluation &evaluation) override;
+      std::string info() const override;
+
+    private:
+      /// The point evaluated last: the trial, until it is accepted. The one
+      /// matrix holds the tangent of at most this point.
+      struct Point
+      {
+        VectorType    velocity;
+        Linearisation kind     = Linearisation::secant;
+        bool          tangent  = true;  // the matrix holds its tangent
+        bool          accepted = false; // it is the iterate now
+      };
+
+      /// Contact search, body residual (and tangent), factors, contact terms
+      /// and force equations at @p v; returns |r|.
+      double assemble(const VectorType   &v,
+                      const Linearisation kind,
+                      const bool          with_tangent);
+      /// The tangent of the last point, if it was left for later.
+      void complete_tangent();
+      /// The contact terms with the current factors (stiffness into the
+      /// matrix with @p with_tangent), and the force equations.
+      void add_contact_terms(const bool with_tangent);
+      /// The contact stiffness taken out of the matrix: the body tangent K_b
+      /// an adaptive estimate reads.
+      void remove_contact_stiffness();
+      /// At an accepted iterate: new adaptive factors from its body system;
+      /// -1 if nothing changed, else the new |r|.
+      double update_penalty();
+      /// K dv = -r with the tangent of the iterate (bordered by the force
+      /// equations).
+      unsigned int solve_direction(VectorType &dv);
+      double       directional_derivative(const VectorType &dv) const;
+      Evaluation   norms(const double r) const;
+      /// The largest last correction of a force-controlled tool relative to
+      /// its velocity (-).
+      double extra_correction() const;
+      bool   newton(const Linearisation kind) const
+      {
+        return kind != Linearisation::secant;
+      }
+      /// A tool is under force control in this step.
+      bool controlled() const { return forces.any_active(); }
+      /// Whether the iterate is still the step's predictor (no estimate at
+      /// a Newton iterate yet).
+      bool predictor() const { return penalty_updates == 0; }
+
+      const parameters::Run &prm;
+      state::State<dim>     &state;
+      dealii::TimerOutput   &timer;
+      BodyOperator<dim>      body;
+      ContactOperator<dim>   contact;
+      ForceEquations<dim>    forces;
+
+      MatrixType matrix;
+      /// The residual of the last point and its body part r_b (no contact),
+      /// kept for penalty estimates at accepted iterates.
+      VectorType residual, body_residual;
+      /// The matrix holds K_b + K_c (else K_b).
+      bool                          matrix_has_contact = false;
+      std::unique_ptr<LinearSolver> linear_solver;
+      FactorReuse                   factor_reuse;
+
+      VectorType *iterate = nullptr; // the state's velocity
+      VectorType  direction, ghost;  // ghost: the point, with ghost values
+      Point       point;
+      Evaluation  last_evaluation;
+
+      double        dt = 0, f_scale = 0;
+      unsigned int  penalty_updates     = 0; // at Newton iterates of the step
+      unsigned int  corrections         = 0; // linear solves of the step
+      unsigned int  step_max_linear     = 0;
+      double        step_condition      = 0;
+      unsigned long n_matrix_assemblies = 0;
+      unsigned long n_factorisations    = 0;
+    };
+  } // namespace solver
+} // namespace formsolve
