@@ -5,10 +5,10 @@
 #include <formsolve/forming/assembler.h>
 #include <formsolve/forming/cell_scatter.h>
 #include <formsolve/forming/cell_tangent.h>
-#include <formsolve/material/hill_orientation.h>
 #include <formsolve/model/cell_kinematics.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/model/position_order.h>
+#include <formsolve/state/cell_points.h>
 #include <formsolve/state/volumetric_rate.h>
 
 #include <algorithm>
@@ -161,24 +161,18 @@ namespace formsolve
                                   DualStress                      *dual,
                                   const CellScatter<dim> *scatter) const
     {
-      const auto        &fe = dof_handler.get_fe();
-      const unsigned int n  = fe.n_dofs_per_cell();
-      // Hill's criterion needs the deformation gradient from the reference
-      // configuration for the orthotropy frame.
-      const bool                     hill = !material.isotropic();
-      CellKinematics<dim>            kf(kinematics,
-                             mapping,
-                             fe,
-                             full,
-                             hill ? update_jacobians : update_default,
-                             hill ? &reference_mapping : nullptr);
-      material::HillOrientation<dim> orientation(material);
-      CellKinematics<dim>            kr(kinematics,
-                             mapping,
-                             fe,
-                             reduced,
-                             update_default,
-                             &reference_mapping);
+      const auto            &fe = dof_handler.get_fe();
+      const unsigned int     n  = fe.n_dofs_per_cell();
+      state::CellPoints<dim> points(material,
+                                    kinematics,
+                                    mapping,
+                                    reference_mapping,
+                                    fe,
+                                    full,
+                                    reduced,
+                                    update_default);
+      CellKinematics<dim>   &kf = points.full();
+      CellKinematics<dim>   &kr = points.reduced();
 
       CellTangent<dim>                     tangent(fe,
                                kf.n_points(),
@@ -186,7 +180,7 @@ namespace formsolve
                                kinematics.axisymmetric());
       FullMatrix<double>                   K(n, n);
       Vector<double>                       r(n);
-      std::vector<SymmetricTensor<2, 3>>   D, Dr;
+      std::vector<SymmetricTensor<2, 3>>   Dr;
       std::vector<ShapeStrain>             B;
       std::vector<double>                  tr(n), s(n), u(n), div_v;
       std::vector<types::global_dof_index> dofs(n);
@@ -200,21 +194,16 @@ namespace formsolve
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            kf.reinit(cell);
-            kr.reinit(cell);
-            if (hill)
-              orientation.reinit(kf);
-            r = 0;
-            kf.rates(v, D);
+            points.reinit(cell, v);
+            r            = 0;
             const auto h = history.get_data(cell);
             for (unsigned int q = 0; q < kf.n_points(); ++q)
               {
-                const auto m =
-                  material.evaluate(D[q],
-                                    h[q]->strain,
-                                    dt,
-                                    newton,
-                                    hill ? &orientation.map(q) : nullptr);
+                const auto   m  = material.evaluate(points.rate(q),
+                                                 h[q]->strain,
+                                                 dt,
+                                                 newton,
+                                                 points.map(q));
                 const double dV = kf.dV(q);
                 kf.shape_strains(q, B);
                 add_point(material,
@@ -222,7 +211,7 @@ namespace formsolve
                           dual ? dual_rate(*dual, material, m, cell, q)
                                : m.strain_rate_deviator,
                           dual != nullptr,
-                          hill ? &orientation.map(q) : nullptr,
+                          points.map(q),
                           q,
                           dV,
                           B,

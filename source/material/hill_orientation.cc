@@ -14,6 +14,8 @@ namespace formsolve
     template <int dim>
     void HillOrientation<dim>::reinit(const model::CellKinematics<dim> &k)
     {
+      if (material.isotropic())
+        return;
       frames.resize(k.n_points());
       maps.resize(k.n_points());
       for (unsigned int q = 0; q < k.n_points(); ++q)

@@ -1,6 +1,6 @@
-#include <formsolve/material/hill_orientation.h>
 #include <formsolve/model/cell_kinematics.h>
 #include <formsolve/model/dimensions.h>
+#include <formsolve/state/cell_points.h>
 #include <formsolve/state/history_update.h>
 #include <formsolve/state/projected_mean_stress.h>
 #include <formsolve/state/volumetric_rate.h>
@@ -60,25 +60,22 @@ namespace formsolve
                                      const double           dt,
                                      HistoryStorage<dim>   &history) const
     {
-      const auto &fe   = dof_handler.get_fe();
-      const bool  hill = !material.isotropic();
+      const auto &fe = dof_handler.get_fe();
       const bool  projected =
         damage && damage->mean_stress() == parameters::MeanStress::projected;
-      CellKinematics<dim>                kf(kinematics,
+      // The sheet's normal (thickness strain) needs the Jacobians.
+      CellPoints<dim>                    points(material,
+                             kinematics,
                              mapping,
+                             reference_mapping,
                              fe,
                              full,
-                             update_jacobians |
-                               (projected ? update_values : update_default),
-                             hill ? &reference_mapping : nullptr);
-      material::HillOrientation<dim>     orientation(material);
-      CellKinematics<dim>                kr(kinematics,
-                             mapping,
-                             fe,
                              reduced,
-                             update_default,
-                             &reference_mapping);
-      std::vector<SymmetricTensor<2, 3>> D, Dr;
+                             update_jacobians |
+                               (projected ? update_values : update_default));
+      CellKinematics<dim>               &kf = points.full();
+      CellKinematics<dim>               &kr = points.reduced();
+      std::vector<SymmetricTensor<2, 3>> Dr;
       std::vector<double>                div_v, cell_means, point_means;
       const double                       Kv = material.bulk_viscosity();
       ProjectedMeanStress<dim>           projection;
@@ -105,11 +102,7 @@ namespace formsolve
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            kf.reinit(cell);
-            kr.reinit(cell);
-            kf.rates(v, D);
-            if (hill)
-              orientation.reinit(kf);
+            points.reinit(cell, v);
             auto h = history.get_data(cell);
             point_means.assign(
               kf.n_points(),
@@ -118,9 +111,9 @@ namespace formsolve
               projection.values(kf.fe_values(), point_means);
             for (unsigned int q = 0; q < kf.n_points(); ++q)
               update_point(kf.mapped_axis(q, dim - 1),
-                           D[q],
+                           points.rate(q),
                            point_means[q],
-                           hill ? &orientation.map(q) : nullptr,
+                           points.map(q),
                            dt,
                            *h[q]);
           }

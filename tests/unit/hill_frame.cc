@@ -80,14 +80,14 @@ namespace
           for (unsigned int q = 0; q < k.n_points(); ++q)
             frames.push_back(o.frame(q));
           for (unsigned int q = 0; q < k.n_points(); ++q)
-            out.push_back(
-              material
-                .evaluate(D,
-                          0.1,
-                          0.1,
-                          false,
-                          fixed ? material.hill_map(frame.initial()) : o.map(q))
-                .deviatoric_stress);
+            out.push_back(material
+                            .evaluate(D,
+                                      0.1,
+                                      0.1,
+                                      false,
+                                      fixed ? material.hill_map(frame.initial())
+                                            : *o.map(q))
+                            .deviatoric_stress);
         }
     return out;
   }

@@ -1,0 +1,61 @@
+// What the assembly and the history update both need at a cell's points,
+// set up once: the kinematics at the full (deviatoric) and reduced
+// (volumetric) quadrature, the strain rates of the velocity, and the point
+// frame of the law (none for an isotropic one).
+#pragma once
+
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <formsolve/material/hill_orientation.h>
+#include <formsolve/model/cell_kinematics.h>
+
+#include <vector>
+
+namespace formsolve
+{
+  namespace state
+  {
+    template <int dim>
+    class CellPoints
+    {
+    public:
+      using CellIterator =
+        typename dealii::DoFHandler<dim>::active_cell_iterator;
+
+      /// @p extra: what the caller needs at the full points besides the
+      /// frame's own flags.
+      CellPoints(const material::RigidViscoplastic &material,
+                 const model::Kinematics<dim>      &kinematics,
+                 const dealii::Mapping<dim>        &mapping,
+                 const dealii::Mapping<dim>        &reference_mapping,
+                 const dealii::FiniteElement<dim>  &fe,
+                 const dealii::Quadrature<dim>     &full,
+                 const dealii::Quadrature<dim>     &reduced,
+                 const dealii::UpdateFlags          extra);
+
+      /// Both quadratures and the frame at @p cell, and the strain rates of
+      /// @p v at the full points.
+      void reinit(const CellIterator                          &cell,
+                  const dealii::TrilinosWrappers::MPI::Vector &v);
+
+      model::CellKinematics<dim> &full() { return kf; }
+      model::CellKinematics<dim> &reduced() { return kr; }
+      /// The rate of deformation at full point q.
+      const dealii::SymmetricTensor<2, 3> &rate(const unsigned int q) const
+      {
+        return D[q];
+      }
+      /// The law's map at full point q (nullptr: isotropic).
+      const material::Mandel6x6 *map(const unsigned int q) const
+      {
+        return frame.map(q);
+      }
+
+    private:
+      material::HillOrientation<dim>             frame;
+      model::CellKinematics<dim>                 kf, kr;
+      std::vector<dealii::SymmetricTensor<2, 3>> D;
+    };
+  } // namespace state
+} // namespace formsolve
