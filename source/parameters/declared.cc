@@ -130,18 +130,40 @@ namespace formsolve
       }
     } // namespace
 
-    void Declarations::add(const std::string   &name,
-                           std::vector<double> &values,
-                           const Accepts       &accepts,
-                           const std::string   &documentation)
+    namespace
+    {
+      void assign(std::vector<double> &values, const std::vector<double> &v)
+      {
+        values = v;
+      }
+
+      void assign(std::array<double, 3> &values, const std::vector<double> &v)
+      {
+        std::copy(v.begin(), v.end(), values.begin());
+      }
+    } // namespace
+
+    template <typename Numbers>
+    void Declarations::add_numbers(const std::string &name,
+                                   Numbers           &values,
+                                   const Accepts     &accepts,
+                                   const std::string &documentation)
     {
       declare(name,
               joined(values.data(), values.size()),
               accepts,
               documentation,
               [&values](const std::string &text) {
-                values = numbers_in(text);
+                assign(values, numbers_in(text));
               });
+    }
+
+    void Declarations::add(const std::string   &name,
+                           std::vector<double> &values,
+                           const Accepts       &accepts,
+                           const std::string   &documentation)
+    {
+      add_numbers(name, values, accepts, documentation);
     }
 
     void Declarations::add(const std::string     &name,
@@ -149,14 +171,7 @@ namespace formsolve
                            const Accepts         &accepts,
                            const std::string     &documentation)
     {
-      declare(name,
-              joined(values.data(), values.size()),
-              accepts,
-              documentation,
-              [&values](const std::string &text) {
-                const auto v = numbers_in(text);
-                std::copy(v.begin(), v.end(), values.begin());
-              });
+      add_numbers(name, values, accepts, documentation);
     }
   } // namespace parameters
 } // namespace formsolve

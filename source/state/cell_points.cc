@@ -11,7 +11,7 @@ namespace formsolve
     CellPoints<dim>::CellPoints(const material::RigidViscoplastic &material,
                                 const model::Kinematics<dim>      &kinematics,
                                 const Mapping<dim>                &mapping,
-                                const Mapping<dim> &reference_mapping,
+                                const Mapping<dim>       &reference_mapping,
                                 const FiniteElement<dim> &fe,
                                 const Quadrature<dim>    &full,
                                 const Quadrature<dim>    &reduced,
@@ -32,7 +32,7 @@ namespace formsolve
     {}
 
     template <int dim>
-    void CellPoints<dim>::reinit(const CellIterator &cell,
+    void CellPoints<dim>::reinit(const CellIterator                  &cell,
                                  const TrilinosWrappers::MPI::Vector &v)
     {
       kf.reinit(cell);

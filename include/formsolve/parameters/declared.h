@@ -98,6 +98,12 @@ namespace formsolve
 
     private:
       DeclaredSection &here();
+      /// Comma-separated numbers into a vector or an array.
+      template <typename Numbers>
+      void add_numbers(const std::string &name,
+                       Numbers           &values,
+                       const Accepts     &accepts,
+                       const std::string &documentation);
 
       dealii::ParameterHandler &prm;
       DeclaredSection           root;
