@@ -34,8 +34,13 @@ The modules, one concept each:
   pictures  which pictures the report has, in order, with captions
   mesh      deal.II's VTU cells as a clean VTK surface
   scene     the part made whole (revolved or mirrored), the camera direction
+  window    the scene drawn offscreen, coloured by a field, into a PNG
   render    the VTK pictures, made in a subprocess (formsolve-report --render)
+            that runs while this process makes the plots
+  vtkclasses  the VTK classes used, imported from their own modules
   page      report.md and report.html
+  timing    where the time goes (FORMSOLVE_REPORT_TIMES=FILE,
+            benchmarks/report_time.sh)
 
 scripts/formsolve-report is the launcher: it finds this package next to
 itself (source and build tree) or in <prefix>/share/formsolve/python/."""

@@ -1,15 +1,17 @@
 """The command line of formsolve-report and the order of the work: read
-the run, make the pictures, write the page. The internal --render call is
-the VTK subprocess (render.py)."""
+the run, start the VTK subprocess, make the plots meanwhile, write the
+page. The internal --render call is the VTK subprocess (render.py)."""
 import argparse
+import importlib.util
 import os
 import sys
 
+from . import timing
 from .outcome import outcome
 from .page import write_report
-from .pictures import pictures_of
+from .pictures import clear_pictures, pictures_of
 from .readers import fail
-from .render import render_pictures
+from .render import Rendering, render_pictures
 from .rundata import Run
 from .split import split_column, split_event
 from .tables import key_rows, solver_rows, zone_check
@@ -59,6 +61,17 @@ def report_directory(args):
     return os.path.join(args.directory, name)
 
 
+def pyplot():
+    """matplotlib.pyplot on the Agg backend: files only, no display."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        fail("python3-matplotlib is missing (apt-get install python3-matplotlib): no report")
+    return plt
+
+
 def main(argv, launcher=None):
     """The report of argv's folder. launcher: the formsolve-report script
     that started this (default sys.argv[0]); the --render subprocess runs
@@ -66,25 +79,28 @@ def main(argv, launcher=None):
     args = parse_args(argv)
     args.launcher = os.path.abspath(launcher or sys.argv[0])
     report = report_directory(args)
+    timing.lap("render" if args.render else "report", "the report's modules")
     if args.render:
         render_pictures(args, report)
         return
     run = Run(args)
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
+    if importlib.util.find_spec("matplotlib") is None:  # before the subprocess is started
         fail("python3-matplotlib is missing (apt-get install python3-matplotlib): no report")
     os.makedirs(report, exist_ok=True)
-    notes = []
+    clear_pictures(report)
+    # The VTK subprocess first: it renders while this process makes the plots.
+    rendering = Rendering(args, report) if run.vtu is not None else None
+    timing.lap("report", "read the run, start the rendering")
+    plt = pyplot()
+    timing.lap("report", "import matplotlib")
     split = split_event(run)
     at_split = split_column(run, split)
-    pictures, checks = pictures_of(run, args, report, split, at_split, plt, notes)
+    pictures, checks, notes = pictures_of(run, args, report, split, at_split, plt, rendering)
     zone_check(run, notes)
     heading, text = outcome(run, split)
     write_report(report, os.path.abspath(run.directory), heading, text, key_rows(run, split, at_split),
                  pictures, solver_rows(run), checks, notes)
+    timing.lap("report", "tables, report.md and report.html")
     for n in notes:
         print("formsolve-report: " + n, file=sys.stderr)
     print(os.path.join(report, "report.md"))

@@ -1,7 +1,7 @@
 """deal.II's VTU output as a clean VTK surface to render: coincident
 points merged, the inner faces at hanging nodes dropped, and the contact
-penetration as a field. vtk is handed in (imported only in the --render
-subprocess); numpy and vtk's numpy support are imported where used."""
+penetration as a field. vtk is handed in (vtkclasses, imported only in the
+--render subprocess); numpy and vtk's numpy support are imported where used."""
 
 
 def merged(grid, vtk):
@@ -9,18 +9,17 @@ def merged(grid, vtk):
     with its own vertices, so every face of every cell would count as
     boundary: the part would be drawn with all its inner faces, which show
     through as dark hatching."""
-    from vtk.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray, vtk_to_numpy
+    from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray, vtk_to_numpy
     import numpy as np
     points = vtk_to_numpy(grid.GetPoints().GetData())
     bounds = np.ptp(points, axis=0).max() if len(points) else 1.0
-    key = np.round(points / (1e-7 * bounds)).astype(np.int64)
-    _, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    first, inverse = distinct_rows(np.round(points / (1e-7 * bounds)).astype(np.int64))
     out = vtk.vtkUnstructuredGrid()
     merged_points = vtk.vtkPoints()
     merged_points.SetData(numpy_to_vtk(np.ascontiguousarray(points[first]), deep=1))
     out.SetPoints(merged_points)
     cells = grid.GetCells()
-    connectivity = inverse.ravel()[vtk_to_numpy(cells.GetConnectivityArray())]
+    connectivity = inverse[vtk_to_numpy(cells.GetConnectivityArray())]
     array = vtk.vtkCellArray()
     array.SetData(numpy_to_vtkIdTypeArray(vtk_to_numpy(cells.GetOffsetsArray()).astype(np.int64), deep=1),
                   numpy_to_vtkIdTypeArray(connectivity.astype(np.int64), deep=1))
@@ -33,9 +32,23 @@ def merged(grid, vtk):
     return out
 
 
+def distinct_rows(key):
+    """(first, inverse) as np.unique(key, axis=0, return_index=True,
+    return_inverse=True) gives them, by a lexicographic sort of the integer
+    rows: 3 times faster (unique sorts the rows as opaque records)."""
+    import numpy as np
+    order = np.lexsort(key.T[::-1])
+    ordered = key[order]
+    new = np.ones(len(key), bool)
+    new[1:] = np.any(ordered[1:] != ordered[:-1], axis=1)
+    inverse = np.empty(len(key), np.int64)
+    inverse[order] = np.cumsum(new) - 1
+    return order[new], inverse  # lexsort is stable: order[new] is each row's first occurrence
+
+
 def add_penetration(data, vtk):
     """penetration_um: how deep a node sits in a tool (contact_gap < 0), in micrometres."""
-    from vtk.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+    from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
     import numpy as np
     gap = vtk_to_numpy(data.GetPointData().GetArray("contact_gap"))
     values = numpy_to_vtk(np.maximum(-gap, 0.0) * 1000.0, deep=1)
@@ -56,7 +69,7 @@ def without_hanging_faces(surface, vtk):
     points, so the surface filter keeps them all, inside the sheet; they
     show through as bright dashes. Such a coarse face has a vertex at its
     centroid (the hanging node), and the fine faces have it as a corner."""
-    from vtk.util.numpy_support import numpy_to_vtkIdTypeArray, vtk_to_numpy
+    from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray, vtk_to_numpy
     import numpy as np
     polys = surface.GetPolys()
     if surface.GetNumberOfPolys() == 0 or surface.GetNumberOfPolys() != surface.GetNumberOfCells():

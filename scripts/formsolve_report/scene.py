@@ -8,12 +8,16 @@ import os
 from .mesh import add_penetration, append, merged, surface_of
 from .vtu import read_vtu
 
+# The nodal fields the pictures show, the only ones read of a VTU file:
+# the thinning, and the contact gap for the penetration (mesh.add_penetration).
+FIELDS = ("thinning_percent", "contact_gap")
+
 
 def column_position(grid, split, axisymmetric):
     """The current mid-surface position of the split's column: the nodes
     whose reference position (position minus displacement) is nearest its
     planform position, averaged through the thickness."""
-    from vtk.util.numpy_support import vtk_to_numpy
+    from vtkmodules.util.numpy_support import vtk_to_numpy
     import numpy as np
     x = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
     ref = x - vtk_to_numpy(grid.GetPointData().GetArray("displacement"))[:, :3]
@@ -53,7 +57,7 @@ def swept(lines, start, angle, vtk):
 def open_gap(data):
     """(from, to) in degrees: the largest angular gap of a revolved copy's
     points about the z axis, the quarter it leaves open."""
-    from vtk.util.numpy_support import vtk_to_numpy
+    from vtkmodules.util.numpy_support import vtk_to_numpy
     import numpy as np
     p = vtk_to_numpy(data.GetPoints().GetData())
     p = p[np.hypot(p[:, 0], p[:, 1]) > 1e-6]
@@ -70,7 +74,7 @@ def revolved_scene(run, grid, tools, split, vtk):
     cut faces; the split column marked on a cut face."""
     d = run.directory
     if run.revolved:
-        volume = merged(read_vtu(os.path.join(d, run.revolved)), vtk)
+        volume = merged(read_vtu(os.path.join(d, run.revolved), FIELDS), vtk)
         add_penetration(volume, vtk)
         gap = open_gap(volume)
         surface = surface_of(volume, vtk)
@@ -97,7 +101,7 @@ def revolved_scene(run, grid, tools, split, vtk):
         lines.SetInputData(tools)
         lines.Update()
         scene["tool_lines"] = append([rotated(lines.GetOutput(), a, vtk, swap=True) for a in gap], vtk)
-    if split:
+    if split and split["R0"] is not None:  # a column to mark
         r, z = column_position(grid, split, True)[:2]
         a = math.radians(gap[0])  # the cut face the open quarter starts at
         scene["marker"] = (r * math.cos(a), r * math.sin(a), z)
@@ -134,7 +138,7 @@ def mirrored_scene(run, grid, tools, split, view, vtk):
         return merged(a.GetOutput(), vtk)  # no seams at the symmetry planes
     scene = {"surface": surface_of(whole(grid), vtk), "tools": whole(tools) if tools is not None else None,
              "gap": None, "marker": None, "tool_lines": None}
-    if split:
+    if split and split["R0"] is not None:  # a column to mark
         x, y, z = column_position(grid, split, False)
         if view == "section" and run.model == "quarter":  # its image opposite the open quarter,
             x, y = -x, -y                                   # seen from inside through the opening

@@ -3,12 +3,24 @@ rebuilt from its nodal fields (for --travel without a sheet_<T>mm.csv).
 numpy and vtk are imported where used: without python3-vtk9 only what
 needs them is left out."""
 
+SHEET_FIELDS = ("thickness", "thinning_percent", "major_strain", "minor_strain", "safety_zone")
 
-def read_vtu(path):
-    import vtk
+
+def read_vtu(path, fields=None):
+    """The grid of a .vtu or .pvtu file with the nodal fields named (all if
+    None): the others are not even decompressed (a revolved copy carries
+    20 fields, the pictures need 2)."""
+    from . import vtkclasses as vtk
     reader = (vtk.vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu")
               else vtk.vtkXMLUnstructuredGridReader())
     reader.SetFileName(path)
+    if fields is not None:
+        reader.UpdateInformation()  # the file's fields: a selection made before has none to act on
+        selection = reader.GetPointDataArraySelection()
+        selection.DisableAllArrays()
+        for name in fields:
+            selection.EnableArray(name)
+        reader.GetCellDataArraySelection().DisableAllArrays()
     reader.Update()
     return reader.GetOutput()
 
@@ -18,13 +30,12 @@ def sheet_from_vtu(path, axisymmetric):
     column carries the column's values; columns are the nodes' in-plane
     reference positions (current position minus displacement)."""
     import numpy as np
-    grid = read_vtu(path)
-    from vtk.util.numpy_support import vtk_to_numpy
+    grid = read_vtu(path, ("displacement",) + SHEET_FIELDS)
+    from vtkmodules.util.numpy_support import vtk_to_numpy
     pd = grid.GetPointData()
     x = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
     ref = x - vtk_to_numpy(pd.GetArray("displacement"))[:, :3]
-    fields = {n: vtk_to_numpy(pd.GetArray(n)) for n in
-              ("thickness", "thinning_percent", "major_strain", "minor_strain", "safety_zone")}
+    fields = {n: vtk_to_numpy(pd.GetArray(n)) for n in SHEET_FIELDS}
     planar = ref[:, :1] if axisymmetric else ref[:, :2]
     labels = columns_of(planar, 1e-3)
     order = np.argsort(labels, kind="stable")
