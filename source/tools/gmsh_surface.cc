@@ -18,35 +18,74 @@ namespace formsolve
   {
     using namespace dealii;
 
+    namespace
+    {
+      /// Opens @p file (@p what: "tool surface file" or "tool profile
+      /// file") in @p session, meshes geometry at @p facet_size to dimension
+      /// @p dim, and reads its node tags and coordinates.
+      void open_nodes(const app::GmshSession   &session,
+                      const std::string        &what,
+                      const std::string        &file,
+                      const double              facet_size,
+                      const int                 dim,
+                      std::vector<std::size_t> &tags,
+                      std::vector<double>      &x)
+      {
+        AssertThrow(std::filesystem::is_regular_file(file),
+                    ExcMessage(what + " '" + file + "': no such file"));
+        session.checked(what, file, "reading", [&] { gmsh::open(file); });
+        if (std::filesystem::path(file).extension() != ".msh")
+          session.checked(
+            what,
+            file,
+            dim == 2 ? "meshing the surfaces" : "meshing the curves",
+            [&] {
+              gmsh::option::setNumber("Mesh.MeshSizeMax", facet_size);
+              gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1 * facet_size);
+              gmsh::model::mesh::generate(dim);
+            });
+        std::vector<double> parametric;
+        session.checked(what, file, "reading the nodes", [&] {
+          gmsh::model::mesh::getNodes(tags,
+                                      x,
+                                      parametric,
+                                      -1,
+                                      -1,
+                                      false,
+                                      false);
+        });
+      }
+
+      /// The node tags of the elements of gmsh type @p type (none if the
+      /// model has none).
+      std::vector<std::size_t> element_nodes(const app::GmshSession &session,
+                                             const std::string      &what,
+                                             const std::string      &file,
+                                             const int               type)
+      {
+        // gmsh 4.8 leaves the vectors as they were for a type it lacks.
+        std::vector<std::size_t> elements, nodes;
+        session.checked(what, file, "reading the elements", [&] {
+          gmsh::model::mesh::getElementsByType(type, elements, nodes);
+        });
+        return nodes;
+      }
+    } // namespace
+
     SurfaceMesh read_with_gmsh(const std::string &file, const double facet_size)
     {
-      AssertThrow(std::filesystem::is_regular_file(file),
-                  ExcMessage("tool surface file '" + file + "': no such file"));
-      const bool is_mesh = std::filesystem::path(file).extension() == ".msh";
-      const app::GmshSession session;
-      session.checked("tool surface file", file, "reading", [&] {
-        gmsh::open(file);
-      });
-      if (!is_mesh)
-        session.checked("tool surface file", file, "meshing the surfaces", [&] {
-          gmsh::option::setNumber("Mesh.MeshSizeMax", facet_size);
-          gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1 * facet_size);
-          gmsh::model::mesh::generate(2);
-        });
-
+      const app::GmshSession              session;
       SurfaceMesh                         m;
       std::map<std::size_t, unsigned int> index;
-      std::vector<std::size_t>            tags, elements, nodes;
-      std::vector<double>                 coordinates, parametric;
-      session.checked("tool surface file", file, "reading the nodes", [&] {
-        gmsh::model::mesh::getNodes(tags,
-                                    coordinates,
-                                    parametric,
-                                    -1,
-                                    -1,
-                                    false,
-                                    false);
-      });
+      std::vector<std::size_t>            tags;
+      std::vector<double>                 coordinates;
+      open_nodes(session,
+                 "tool surface file",
+                 file,
+                 facet_size,
+                 2,
+                 tags,
+                 coordinates);
       for (unsigned int i = 0; i < tags.size(); ++i)
         {
           index[tags[i]] = m.vertices.size();
@@ -69,17 +108,8 @@ namespace formsolve
                                            {{3, 4, 4}},
                                            {{16, 4, 8}}})
         {
-          // gmsh 4.8 leaves the vectors as they were for a type it lacks.
-          elements.clear();
-          nodes.clear();
-          session.checked("tool surface file",
-                          file,
-                          "reading the elements",
-                          [&, type = type] {
-                            gmsh::model::mesh::getElementsByType(type,
-                                                                 elements,
-                                                                 nodes);
-                          });
+          const auto nodes =
+            element_nodes(session, "tool surface file", file, type);
           for (std::size_t e = 0; e + stride <= nodes.size(); e += stride)
             {
               const unsigned int a = vertex(nodes[e]), b = vertex(nodes[e + 1]),
@@ -99,24 +129,10 @@ namespace formsolve
     ProfileLines read_profile_with_gmsh(const std::string &file,
                                         const double       facet_size)
     {
-      AssertThrow(std::filesystem::is_regular_file(file),
-                  ExcMessage("tool profile file '" + file + "': no such file"));
-      const bool is_mesh = std::filesystem::path(file).extension() == ".msh";
-      const app::GmshSession session;
-      session.checked("tool profile file", file, "reading", [&] {
-        gmsh::open(file);
-      });
-      if (!is_mesh)
-        session.checked("tool profile file", file, "meshing the curves", [&] {
-          gmsh::option::setNumber("Mesh.MeshSizeMax", facet_size);
-          gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1 * facet_size);
-          gmsh::model::mesh::generate(1);
-        });
-      std::vector<std::size_t> tags, elements, nodes;
-      std::vector<double>      x, parametric;
-      session.checked("tool profile file", file, "reading the nodes", [&] {
-        gmsh::model::mesh::getNodes(tags, x, parametric, -1, -1, false, false);
-      });
+      const app::GmshSession   session;
+      std::vector<std::size_t> tags;
+      std::vector<double>      x;
+      open_nodes(session, "tool profile file", file, facet_size, 1, tags, x);
       // The plane the profile is drawn in: y = 0 (x-z) or z = 0 (x-y).
       double span[3] = {0, 0, 0};
       for (std::size_t i = 0; i < tags.size(); ++i)
@@ -138,16 +154,8 @@ namespace formsolve
       for (const auto &[type, stride] :
            std::vector<std::array<int, 2>>{{{1, 2}}, {{8, 3}}})
         {
-          elements.clear();
-          nodes.clear();
-          session.checked("tool profile file",
-                          file,
-                          "reading the elements",
-                          [&, type = type] {
-                            gmsh::model::mesh::getElementsByType(type,
-                                                                 elements,
-                                                                 nodes);
-                          });
+          const auto nodes =
+            element_nodes(session, "tool profile file", file, type);
           for (std::size_t e = 0; e + stride <= nodes.size(); e += stride)
             {
               const auto a = index.find(nodes[e]), b = index.find(nodes[e + 1]);
