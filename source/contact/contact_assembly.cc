@@ -20,8 +20,7 @@ namespace formsolve
                            const bool                       newton,
                            const AffineConstraints<double> &constraints,
                            TrilinosWrappers::SparseMatrix  *matrix,
-                           TrilinosWrappers::MPI::Vector   *residual,
-                           const double                     sign)
+                           TrilinosWrappers::MPI::Vector   *residual)
     {
       FullMatrix<double>                   Kc(dim, dim);
       Vector<double>                       rc(dim);
@@ -41,13 +40,12 @@ namespace formsolve
           for (unsigned int a = 0; a < dim; ++a)
             {
               node_dofs[a] = set.nodes[pair.node].dofs[a];
-              rc[a]        = -sign * f.force[a];
+              rc[a]        = -f.force[a];
               for (unsigned int b = 0; b < dim; ++b)
-                Kc(a, b) = sign * f.stiffness[a][b];
+                Kc(a, b) = f.stiffness[a][b];
             }
           // Rows and columns given apart: no entries on constrained
-          // diagonals, which sign = -1 could not undo (deal.II adds
-          // |K_c(i,i)| there whatever the sign).
+          // diagonals (deal.II would add |K_c(i,i)| there).
           if (matrix)
             constraints.distribute_local_to_global(Kc,
                                                    node_dofs,
@@ -71,8 +69,7 @@ namespace formsolve
                                   bool,                              \
                                   const AffineConstraints<double> &, \
                                   TrilinosWrappers::SparseMatrix *,  \
-                                  TrilinosWrappers::MPI::Vector *,   \
-                                  double);
+                                  TrilinosWrappers::MPI::Vector *);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace contact

@@ -30,6 +30,7 @@ namespace formsolve
     void ContactOperator<dim>::reinit()
     {
       epsilon.clear();
+      keys.clear();
       last_active.clear();
       last_record_status.clear(); // new surface nodes
     }
@@ -83,37 +84,53 @@ namespace formsolve
     }
 
     template <int dim>
-    bool ContactOperator<dim>::has_factors() const
+    bool ContactOperator<dim>::factors_match() const
     {
-      // Collective: decide on all ranks alike.
-      return Utilities::MPI::max(int(epsilon.size() !=
-                                     state.contact_set.pairs.size()),
-                                 state.comm) == 0;
+      const auto &pairs = state.contact_set.pairs;
+      if (keys.size() != pairs.size() || epsilon.size() != pairs.size())
+        return false;
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        if (keys[k].first != pairs[k].node || keys[k].second != pairs[k].tool)
+          return false;
+      return true;
     }
 
     template <int dim>
-    void ContactOperator<dim>::estimate(const VectorType &r_b,
-                                        const MatrixType &K_b,
-                                        const double      dt,
-                                        const bool        predictor)
+    void ContactOperator<dim>::keep_keys()
+    {
+      const auto &pairs = state.contact_set.pairs;
+      AssertDimension(epsilon.size(), pairs.size());
+      keys.resize(pairs.size());
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        keys[k] = {pairs[k].node, pairs[k].tool};
+    }
+
+    template <int dim>
+    void ContactOperator<dim>::at_point(const contact::SystemView &system)
     {
       TimerOutput::Scope t(timer, "penalty estimate");
-      strategy.estimate(
-        state.contact_set,
-        state.tools,
-        contact::SystemView{&r_b, &K_b, &state.constraints, dt, predictor},
-        state.contact_state,
-        epsilon);
+      // Collective: decide on all ranks alike.
+      const bool same =
+        Utilities::MPI::min(int(factors_match()), state.comm) != 0;
+      strategy.at_point(state.contact_set,
+                        state.tools,
+                        system,
+                        state.contact_state,
+                        epsilon,
+                        same);
+      keep_keys();
     }
 
     template <int dim>
-    bool ContactOperator<dim>::holds_factors(const bool predictor) const
+    bool ContactOperator<dim>::at_iterate(const contact::SystemView &system)
     {
-      return strategy.holds_factors(state.contact_set,
-                                    state.tools,
-                                    state.contact_state,
-                                    predictor,
-                                    state.comm);
+      TimerOutput::Scope t(timer, "penalty estimate");
+      Assert(factors_match(), ExcInternalError());
+      return strategy.at_iterate(state.contact_set,
+                                 state.tools,
+                                 system,
+                                 state.contact_state,
+                                 epsilon);
     }
 
     template <int dim>
@@ -130,36 +147,31 @@ namespace formsolve
     }
 
     template <int dim>
-    void ContactOperator<dim>::converged(const VectorType &r_b,
-                                         const MatrixType &K_b,
-                                         const double      dt)
+    void ContactOperator<dim>::converged(const contact::SystemView &system)
     {
       TimerOutput::Scope t(timer, "penalty estimate");
-      strategy.converged(
-        state.contact_set,
-        state.tools,
-        contact::SystemView{&r_b, &K_b, &state.constraints, dt},
-        state.contact_state);
+      strategy.converged(state.contact_set,
+                         state.tools,
+                         system,
+                         state.contact_state);
     }
 
     template <int dim>
     void ContactOperator<dim>::add(MatrixType  *matrix,
                                    VectorType  *residual,
-                                   const double sign,
                                    const double dt,
-                                   const bool   newton)
+                                   const bool   newton) const
     {
       TimerOutput::Scope t(timer, "assembly: contact terms");
       contact::add_contact_terms(state.contact_set,
-                                 epsilon,
+                                 factors(),
                                  state.tools,
                                  prm.contact.regularisation_velocity,
                                  dt,
                                  newton,
                                  state.constraints,
                                  matrix,
-                                 residual,
-                                 sign);
+                                 residual);
     }
 
     template <int dim>

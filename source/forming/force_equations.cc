@@ -29,7 +29,7 @@ namespace formsolve
           b[j].reinit(owned, comm);
           c[j].reinit(owned, comm);
         }
-      for (auto *x : {&e, &rho, &u, &u_trial, &du, &nearest_gap, &nearest_dn})
+      for (auto *x : {&e, &rho, &u, &du, &nearest_gap, &nearest_dn})
         x->assign(m, 0.);
       on.assign(m, false);
       has_contact.assign(m, false);
@@ -41,8 +41,8 @@ namespace formsolve
     {
       Assert(velocity.size() == size() && active.size() == size(),
              ExcInternalError());
-      u = u_trial = velocity;
-      on          = active;
+      u  = velocity;
+      on = active;
       std::fill(du.begin(), du.end(), 0.);
     }
 
@@ -53,10 +53,12 @@ namespace formsolve
     }
 
     template <int dim>
-    void ForceEquations<dim>::set_step_length(const double alpha)
+    std::vector<double> ForceEquations<dim>::speeds_at(const double alpha) const
     {
+      std::vector<double> speeds(size());
       for (unsigned int j = 0; j < size(); ++j)
-        u_trial[j] = u[j] + alpha * du[j];
+        speeds[j] = u[j] + alpha * du[j];
+      return speeds;
     }
 
     template <int dim>

@@ -38,8 +38,7 @@ namespace formsolve
       // coexist (a remeshing, the coarse start).
       linear_solver.reset();
       matrix.clear();
-      matrix_has_contact = false;
-      point.tangent      = true;
+      point.matrix = Iterate::Matrix::none;
       body.clear();
       {
         DynamicSparsityPattern dsp(state.relevant);
@@ -72,7 +71,7 @@ namespace formsolve
     {
       dt = step_dt;
       body.begin_step();
-      point.tangent   = true;
+      point.matrix    = Iterate::Matrix::none;
       penalty_updates = 0;
       corrections     = 0;
       step_max_linear = 0;
@@ -85,7 +84,6 @@ namespace formsolve
       contact.begin_solve();
       factor_reuse.begin_solve();
       forces.begin_solve(state.control_velocities(), state.active_controls());
-      iterate   = &state.velocity;
       direction = 0;
     }
 
@@ -100,66 +98,48 @@ namespace formsolve
     }
 
     template <int dim>
-    double FormingProblem<dim>::assemble(const VectorType   &v,
-                                         const Linearisation kind,
-                                         const bool          with_tangent)
+    double FormingProblem<dim>::assemble(const bool with_tangent)
     {
-      n_matrix_assemblies += with_tangent;
-      const bool accepted = point.accepted && !point.tangent;
-      point.kind          = kind;
-      point.tangent       = with_tangent;
-      ghost               = v;
-      forces.move_tools(forces.trial_velocities(), state.tools);
+      ghost = point.velocity;
+      forces.move_tools(point.tool_speeds, state.tools);
       contact.search(ghost, dt);
-      {
-        // Separate sections: the cost per cell of each kind is measured
-        // (doc/convergence.md).
-        TimerOutput::Scope t(timer,
-                             with_tangent ? "assembly: body, tangent"
-                                          : "assembly: body, residual only");
-        MatrixType        *K = with_tangent ? &matrix : nullptr;
-        f_scale =
-          accepted ? body.evaluate_accepted(state, ghost, dt, kind, K, residual)
-                   : body.evaluate(state, ghost, dt, kind, K, residual);
-      }
-      // Factors: an adaptive strategy reads the body system (line-search
-      // trials keep the factors of the iterate, and are estimated here only
-      // when there are no factors for these pairs yet); others estimate at
-      // every evaluation.
-      bool estimate = !contact.reads_body_system();
-      if (contact.reads_body_system() && with_tangent)
-        {
-          body_residual = residual;
-          estimate      = !contact.has_factors();
-        }
-      if (estimate)
-        contact.estimate(residual, matrix, dt, predictor());
-      if (with_tangent)
-        factor_reuse.assembled_at(v);
-      add_contact_terms(with_tangent);
+      evaluate_body(with_tangent);
+      contact.at_point(body_system());
+      add_contact_forces();
       return residual.l2_norm();
     }
 
     template <int dim>
-    void FormingProblem<dim>::complete_tangent()
+    void FormingProblem<dim>::evaluate_body(const bool with_tangent)
     {
-      // The stress-velocity tangent of a point accepted since is linearised
-      // about the iterate before it, as in an assembly before the
-      // acceptance (BodyOperator::evaluate_accepted).
-      if (!point.tangent)
-        assemble(point.velocity, point.kind, true);
+      // Separate sections: the cost per cell of each kind is measured
+      // (doc/convergence.md).
+      TimerOutput::Scope t(timer,
+                           with_tangent ? "assembly: body, tangent"
+                                        : "assembly: body, residual only");
+      n_matrix_assemblies += with_tangent;
+      MatrixType *K = with_tangent ? &matrix : nullptr;
+      // A point accepted before its tangent was assembled is linearised
+      // about the iterate before it (BodyOperator::evaluate_accepted).
+      f_scale =
+        point.accepted
+          ? body
+              .evaluate_accepted(state, ghost, dt, point.kind, K, body_residual)
+          : body.evaluate(state, ghost, dt, point.kind, K, body_residual);
+      point.matrix =
+        with_tangent ? Iterate::Matrix::body : Iterate::Matrix::none;
+      if (with_tangent)
+        factor_reuse.assembled_at(point.velocity);
     }
 
     template <int dim>
-    void FormingProblem<dim>::add_contact_terms(const bool with_tangent)
+    void FormingProblem<dim>::add_contact_forces()
     {
-      contact.add(with_tangent ? &matrix : nullptr,
-                  &residual,
-                  1.,
-                  dt,
-                  newton(point.kind));
-      if (with_tangent)
-        matrix_has_contact = true;
+      residual = body_residual;
+      // The copy leaves the vector in 'insert' mode; settle it on every rank
+      // now, before ranks with and without contact pairs start adding.
+      residual.compress(VectorOperation::insert);
+      contact.add(nullptr, &residual, dt, newton(point.kind));
       if (controlled())
         {
           std::vector<double> targets;
@@ -177,56 +157,51 @@ namespace formsolve
     }
 
     template <int dim>
-    void FormingProblem<dim>::remove_contact_stiffness()
+    void FormingProblem<dim>::complete_tangent()
     {
-      // The matrix holds K_b + K_c of the last assembly: the pairs, factors,
-      // tools and linearisation it was made with are still those of the
-      // state (no search and no estimate since).
-      Assert(matrix_has_contact, ExcInternalError());
-      contact.add(&matrix, nullptr, -1., dt, newton(point.kind));
-      matrix_has_contact = false;
+      if (point.has_tangent())
+        return;
+      evaluate_body(true);
+      add_contact_forces();
+    }
+
+    template <int dim>
+    contact::SystemView FormingProblem<dim>::body_system()
+    {
+      return contact::SystemView(&body_residual,
+                                 &matrix,
+                                 &state.constraints,
+                                 dt,
+                                 predictor(),
+                                 [this]() {
+                                   // The contact stiffness enters the
+                                   // matrix for the solve, after the
+                                   // strategies' reads.
+                                   Assert(point.matrix !=
+                                            Iterate::Matrix::body_and_contact,
+                                          ExcInternalError());
+                                   if (!point.has_tangent())
+                                     evaluate_body(true);
+                                 });
     }
 
     template <int dim>
     double FormingProblem<dim>::update_penalty()
     {
-      if (!contact.reads_body_system())
-        return -1;
-      if (!point.tangent)
-        {
-          // Held factors: the residual of the point is already this one.
-          if (contact.holds_factors(predictor()))
-            return -1;
-          complete_tangent();
-        }
-      remove_contact_stiffness();
-      contact.estimate(body_residual, matrix, dt, predictor());
+      const bool had_tangent = point.has_tangent();
+      const bool estimated   = contact.at_iterate(body_system());
       // Newton estimates here once per accepted iterate, the predictor first.
-      ++penalty_updates;
-      residual = body_residual;
-      // The copy leaves the vector in 'insert' mode; settle it on every rank
-      // now, before ranks with and without contact pairs start adding.
-      residual.compress(VectorOperation::insert);
-      add_contact_terms(true);
+      penalty_updates += estimated;
+      if (!estimated && point.has_tangent() == had_tangent)
+        return -1;
+      add_contact_forces();
       return residual.l2_norm();
     }
 
     template <int dim>
     void FormingProblem<dim>::end_solve()
     {
-      if (!contact.reads_body_system())
-        return;
-      if (!point.tangent)
-        {
-          // The matrix is of the iterate before; the next solve assembles
-          // anew, and only a strategy that reads it needs the tangent.
-          if (!contact.reads_converged_system())
-            return;
-          complete_tangent();
-        }
-      // The body tangent for the strategy; the next solve assembles anew.
-      remove_contact_stiffness();
-      contact.converged(body_residual, matrix, dt);
+      contact.converged(body_system());
     }
 
     template <int dim>
@@ -234,14 +209,13 @@ namespace formsolve
                                              const Linearisation kind,
                                              const bool          tangent_now)
     {
-      point.velocity = *iterate;
+      point.velocity = state.velocity;
       point.velocity.add(alpha, direction);
-      point.accepted = false;
-      forces.set_step_length(alpha);
-      const double r        = assemble(point.velocity,
-                                kind,
-                                tangent_now || kind == Linearisation::exact);
-      last_evaluation       = norms(r);
+      point.tool_speeds = forces.speeds_at(alpha);
+      point.kind        = kind;
+      point.accepted    = false;
+      const double r    = assemble(tangent_now || kind == Linearisation::exact);
+      last_evaluation   = norms(r);
       last_evaluation.slope = directional_derivative(direction);
       return last_evaluation;
     }
@@ -254,7 +228,7 @@ namespace formsolve
       direction           = 0;
       d.linear_iterations = solve_direction(direction);
       d.norm              = direction.l2_norm();
-      VectorType full(*iterate);
+      VectorType full(state.velocity);
       full.add(1., direction);
       d.full_step_norm = full.l2_norm();
       d.extra_relative = extra_correction();
@@ -265,15 +239,15 @@ namespace formsolve
     template <int dim>
     Accepted FormingProblem<dim>::accept()
     {
-      *iterate       = point.velocity;
+      state.velocity = point.velocity;
       point.accepted = true;
-      forces.accept();
+      forces.accept(point.tool_speeds);
       body.accept(state.comm, prm.nonlinear.log_iterations);
       Accepted     a;
       const double r       = update_penalty();
       a.evaluation         = norms(r >= 0 ? r : last_evaluation.residual);
       a.active_set_changed = contact.changed();
-      a.norm               = iterate->l2_norm();
+      a.norm               = state.velocity.l2_norm();
       a.extra_relative     = extra_correction();
       return a;
     }
@@ -281,10 +255,10 @@ namespace formsolve
     template <int dim>
     bool FormingProblem<dim>::tighten(Evaluation &evaluation)
     {
-      if (!contact.reads_body_system() || !contact.tighten())
+      if (!contact.tighten())
         return false;
-      complete_tangent();
-      evaluation = norms(update_penalty());
+      const double r = update_penalty();
+      evaluation     = norms(r >= 0 ? r : residual.l2_norm());
       return true;
     }
 
@@ -292,6 +266,11 @@ namespace formsolve
     unsigned int FormingProblem<dim>::solve_direction(VectorType &dv)
     {
       complete_tangent();
+      if (point.matrix == Iterate::Matrix::body)
+        {
+          contact.add(&matrix, nullptr, dt, newton(point.kind));
+          point.matrix = Iterate::Matrix::body_and_contact;
+        }
       TimerOutput::Scope t(timer, "linear solve");
       VectorType         rhs(residual);
       rhs *= -1.;

@@ -6,11 +6,16 @@
 // - step: held through a solve whatever the residual; converged() writes the
 //   next solve's factor;
 // - freeze: a pair locked by the chatter guard that flips does not restart
-//   the estimates.
+//   the estimates;
+// - the body system is read (its tangent assembled) only where a strategy
+//   needs it: never by the fixed penalty, not at an iterate whose factors
+//   the adaptive one holds, not at a trial with the iterate's pairs; and
+//   at most once per point.
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <formsolve/contact/strategies/adaptive.h>
+#include <formsolve/contact/strategies/fixed.h>
 
 #include "check.h"
 #include "flat_punch.h"
@@ -60,6 +65,20 @@ namespace
       r[0] = -force;
       r.compress(VectorOperation::insert);
       return contact::SystemView{&r, &K, &constraints, dt, predictor};
+    }
+
+    /// As carry(), read lazily: @p reads counts the assemblies it asks for.
+    contact::SystemView
+    lazy(const double force, unsigned int &reads, const bool predictor = false)
+    {
+      r[0] = -force;
+      r.compress(VectorOperation::insert);
+      return contact::SystemView(&r,
+                                 &K,
+                                 &constraints,
+                                 dt,
+                                 predictor,
+                                 [&reads]() { ++reads; });
     }
   };
 } // namespace
@@ -140,6 +159,62 @@ int main(int argc, char **argv)
                 eps[0],
                 first_locked,
                 1e-6);
+  }
+
+  // Reads of the body system.
+  {
+    Spring                s;
+    std::vector<double>   eps;
+    unsigned int          reads = 0;
+    contact::ContactState state;
+    state.reset(1, tools.size());
+    contact::FixedPenalty<3> fixed;
+    fixed.at_point(s.set, tools, s.lazy(500, reads), state, eps, false);
+    test::close("fixed: factor from the tool alone (N/mm)",
+                eps[0],
+                tools.penalty_factor(0) * s.set.pairs[0].area,
+                1e-9);
+    test::close("fixed: at_iterate estimates nothing",
+                fixed.at_iterate(s.set, tools, s.lazy(500, reads), state, eps),
+                0,
+                0);
+    test::close("fixed: body system read", reads, 0, 0);
+
+    for (const auto update : {FactorUpdate::iteration, FactorUpdate::step})
+      {
+        const std::string name =
+          update == FactorUpdate::step ? "step: " : "iteration: ";
+        prm.factor_update = update;
+        prm.freeze        = false;
+        contact::AdaptivePenalty<3> adaptive(prm, false);
+        state.reset(1, tools.size());
+        state(0, 0).factor = record;
+        adaptive.begin_solve();
+        reads = 0;
+        // A new pair at the predictor: estimated at once, one read however
+        // often the system is looked at.
+        adaptive
+          .at_point(s.set, tools, s.lazy(500, reads, true), state, eps, false);
+        test::close(name + "new pairs read the system once", reads, 1, 0);
+        // A trial with the iterate's pairs keeps their factors.
+        const double kept = eps[0];
+        adaptive.at_point(s.set, tools, s.lazy(700, reads), state, eps, true);
+        test::close(name + "same pairs: no read", reads, 1, 0);
+        test::close(name + "same pairs: factor kept", eps[0], kept, 0);
+        // Accepted: iteration estimates anew (a read); step holds them.
+        const bool estimated =
+          adaptive.at_iterate(s.set, tools, s.lazy(300, reads), state, eps);
+        const bool step = update == FactorUpdate::step;
+        test::close(name + "iterate estimated", estimated, !step, 0);
+        test::close(name + "iterate's reads", reads, step ? 1 : 2, 0);
+        test::close(name + "iterate's factor (N/mm)",
+                    eps[0],
+                    step ? record : 300 / delta,
+                    1e-6);
+        // Convergence: step reads the system for the next solve's factors.
+        adaptive.converged(s.set, tools, s.lazy(400, reads), state);
+        test::close(name + "converged reads", reads, step ? 2 : 2, 0);
+      }
   }
   return test::result();
 }

@@ -7,10 +7,16 @@
 //   s' : D = sigma_bar eps_bar_dot, and Q annihilates the identity;
 // - normal anisotropy: eps_bar_dot^2 of in-plane principal rates is
 //   (1+r)/(1+2r) [(1+r)(e1^2 + e2^2) + 2 r e1 e2];
-// - a metric rotated with the material gives the same equivalent rate.
+// - a metric rotated with the material gives the same equivalent rate;
+// - the 6-vectors and 6x6 matrices of material/mandel.h are deal.II's Kelvin
+//   notation (Physics::Notation::Kelvin: same order, same sqrt 2), kept in
+//   fixed-size arrays because Kelvin's heap Vector/FullMatrix cost 4-5x
+//   per point; mandel_rotation rotates them as R a R^T.
+#include <deal.II/physics/notation.h>
 #include <deal.II/physics/transformations.h>
 
 #include <formsolve/material/hill48.h>
+#include <formsolve/material/mandel.h>
 
 #include "check.h"
 
@@ -147,6 +153,44 @@ int main()
                 closed,
                 1e-14);
     test::close("normal r, L = M = 3/2", h.L + h.M, 3, 0);
+  }
+  {
+    namespace Kelvin = Physics::Notation::Kelvin;
+    using namespace formsolve::material;
+    const SymmetricTensor<2, 3> a =
+      some_deviator(0.3) + unit_symmetric_tensor<3>();
+    const Hill48 h = Hill48::from_normal_r(0.7, TransverseShear::isotropic);
+    const SymmetricTensor<4, 3> C  = h.dual() + outer_product(a, a);
+    const Vector<double>        kv = Kelvin::to_vector(a);
+    const FullMatrix<double>    km = Kelvin::to_matrix(C);
+    const Mandel6               mv = to_mandel(a);
+    const Mandel6x6             mm = to_mandel(C);
+    double                      dv = 0, dm = 0;
+    for (unsigned int r = 0; r < 6; ++r)
+      {
+        dv = std::max(dv, std::abs(mv[r] - kv[r]));
+        for (unsigned int c = 0; c < 6; ++c)
+          dm = std::max(dm, std::abs(mm[r][c] - km(r, c)));
+      }
+    test::close("Mandel 6-vector is Kelvin's", dv, 0, 1e-15);
+    test::close("Mandel 6x6 matrix is Kelvin's", dm, 0, 1e-14);
+    const SymmetricTensor<2, 3> back =
+      Kelvin::to_tensor<SymmetricTensor<2, 3>>(kv);
+    test::close("from_mandel is Kelvin's to_tensor",
+                (from_mandel(mv) - back).norm(),
+                0,
+                1e-15);
+    Tensor<1, 3> axis({0.3, 0.5, 0.8});
+    axis /= axis.norm();
+    const Tensor<2, 3> R =
+      Physics::Transformations::Rotations::rotation_matrix_3d(axis, 0.4);
+    const Mandel6 rotated = multiply(mandel_rotation(R), to_mandel(a));
+    const SymmetricTensor<2, 3> Ra =
+      Physics::Transformations::basis_transformation(a, R);
+    test::close("mandel_rotation is R a R^T",
+                (from_mandel(rotated) - Ra).norm(),
+                0,
+                1e-14);
   }
   return test::result();
 }

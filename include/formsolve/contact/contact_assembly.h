@@ -16,12 +16,10 @@ namespace formsolve
   namespace contact
   {
     /// r -= f_contact and K += -df/dv for the active (and locked) pairs with
-    /// factors @p epsilon, each multiplied by @p sign, into @p matrix and
-    /// @p residual where given; then compresses them. The stiffness is
-    /// condensed with @p constraints without entries on constrained diagonals
-    /// (the body's keep those rows regular), so that @p sign = -1 with the same
-    /// arguments takes out of the matrix, up to round-off, what +1 put in: the
-    /// body tangent comes back without a copy of it.
+    /// factors @p epsilon into @p matrix and @p residual where given; then
+    /// compresses them. The stiffness is condensed with @p constraints
+    /// without entries on constrained diagonals (the body's keep those rows
+    /// regular).
     template <int dim>
     void add_contact_terms(const ContactSet<dim>                   &set,
                            const std::vector<double>               &epsilon,
@@ -31,7 +29,6 @@ namespace formsolve
                            const bool                               newton,
                            const dealii::AffineConstraints<double> &constraints,
                            dealii::TrilinosWrappers::SparseMatrix  *matrix,
-                           dealii::TrilinosWrappers::MPI::Vector   *residual,
-                           const double                             sign = 1);
+                           dealii::TrilinosWrappers::MPI::Vector   *residual);
   } // namespace contact
 } // namespace formsolve

@@ -23,18 +23,66 @@ namespace formsolve
 {
   namespace contact
   {
-    /// The current system without contact, for strategies that need it.
-    struct SystemView
+    /// The body system (no contact) at the point the factors are for. A view
+    /// made with @p prepare assembles the point's tangent when first read:
+    /// a strategy that does not read it costs no assembly. That first read
+    /// is collective: a strategy reads on every rank (with pairs or
+    /// without) or on none.
+    class SystemView
     {
+    public:
+      SystemView(const dealii::TrilinosWrappers::MPI::Vector  *residual,
+                 const dealii::TrilinosWrappers::SparseMatrix *matrix,
+                 const dealii::AffineConstraints<double>      *constraints,
+                 const double                                  dt,
+                 const bool            predictor = false,
+                 std::function<void()> prepare   = {})
+          : dt(dt)
+          , predictor(predictor)
+          , r_b(residual)
+          , K_b(matrix)
+          , constraints_(constraints)
+          , prepare(std::move(prepare))
+      {}
       /// Body residual r_b (internal minus external forces, no contact), N.
-      const dealii::TrilinosWrappers::MPI::Vector *residual = nullptr;
+      const dealii::TrilinosWrappers::MPI::Vector &residual() const
+      {
+        ready();
+        return *r_b;
+      }
       /// Body tangent K_b = dr_b/dv (N s/mm), constrained rows included.
-      const dealii::TrilinosWrappers::SparseMatrix *matrix      = nullptr;
-      const dealii::AffineConstraints<double>      *constraints = nullptr;
-      double                                        dt          = 0;
+      const dealii::TrilinosWrappers::SparseMatrix &matrix() const
+      {
+        ready();
+        return *K_b;
+      }
+      const dealii::AffineConstraints<double> &constraints() const
+      {
+        return *constraints_;
+      }
+      /// Reads nothing of the system.
+      MPI_Comm comm() const { return r_b->get_mpi_communicator(); }
+
+      const double dt;
       /// The iterate is a step's predictor (the previous velocity in the new
       /// configuration), not yet a Newton iterate. The same on all ranks.
-      bool predictor = false;
+      const bool predictor;
+
+    private:
+      /// Collective: a strategy reads the system on all ranks or on none.
+      void ready() const
+      {
+        if (prepare)
+          {
+            const auto p = std::move(prepare);
+            prepare      = nullptr;
+            p();
+          }
+      }
+      const dealii::TrilinosWrappers::MPI::Vector  *r_b;
+      const dealii::TrilinosWrappers::SparseMatrix *K_b;
+      const dealii::AffineConstraints<double>      *constraints_;
+      mutable std::function<void()>                 prepare;
     };
 
     template <int dim>
@@ -43,36 +91,31 @@ namespace formsolve
     public:
       virtual ~PenaltyStrategy() = default;
 
-      /// Whether estimate() reads the SystemView (then the caller assembles
-      /// the body system first).
-      virtual bool needs_system() const { return false; }
-
       /// A new Newton solve of a step begins.
       virtual void begin_solve() {}
 
-      /// One factor per pair in @p set (N/mm: nodal force per mm of
-      /// penetration). May update the per-node memory in @p state.
-      virtual void estimate(const ContactSet<dim>     &set,
+      /// A point was evaluated (a line-search trial or an iterate) and its
+      /// pairs found: @p epsilon gets one factor per pair in @p set (N/mm:
+      /// nodal force per mm of penetration). @p same_pairs: @p epsilon holds
+      /// factors of these pairs (same nodes and tools) from an earlier point.
+      virtual void at_point(const ContactSet<dim>     &set,
                             const tools::ToolSet<dim> &tools,
                             const SystemView          &system,
                             ContactState              &state,
-                            std::vector<double>       &epsilon) = 0;
+                            std::vector<double>       &epsilon,
+                            const bool                 same_pairs) = 0;
 
-      /// Whether estimate() at @p set would return the factors of its last
-      /// call without reading the system (factors held or frozen); the same
-      /// on all ranks of @p comm. Then an iterate whose tangent was not
-      /// assembled needs none for the estimate.
-      virtual bool holds_factors(const ContactSet<dim> & /*set*/,
-                                 const tools::ToolSet<dim> & /*tools*/,
-                                 const ContactState & /*state*/,
-                                 const bool /*predictor*/,
-                                 const MPI_Comm /*comm*/) const
+      /// Newton accepted the point: new factors from its body system, if the
+      /// strategy estimates per iterate. Returns whether @p epsilon was
+      /// estimated anew (the same on all ranks).
+      virtual bool at_iterate(const ContactSet<dim> & /*set*/,
+                              const tools::ToolSet<dim> & /*tools*/,
+                              const SystemView & /*system*/,
+                              ContactState & /*state*/,
+                              std::vector<double> & /*epsilon*/)
       {
-        return !needs_system();
+        return false;
       }
-
-      /// Whether converged() reads the system.
-      virtual bool reads_converged_system() const { return false; }
 
       /// Called once a solve has converged, with the body system at the
       /// converged iterate, before finish_solve(): a strategy that holds its

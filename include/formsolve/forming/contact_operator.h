@@ -1,7 +1,7 @@
 // Contact of the sheet with the rigid tools as one operator of the step
 // (doc/theory.md, section 6): the pairs at a trial velocity, the penalty
 // factors from the body system, and the contact forces and stiffness added
-// to (or taken out of) the system. It works on the state's contact set and
+// to the system. It works on the state's contact set and
 // contact state, which refinement transfers and checkpoints save, and owns
 // the search, the strategy's factors and what changed between iterates.
 #pragma once
@@ -43,48 +43,45 @@ namespace formsolve
       /// contact); @p ghost: a ghosted vector to search with.
       void predict(VectorType &v, VectorType &ghost, const double dt);
 
-      /// Whether the factors are estimated from the body system (K_b, r_b)
-      /// at every accepted iterate, rather than once per set of pairs.
-      bool reads_body_system() const { return strategy.needs_system(); }
-      /// Whether there are factors for the current pairs (collective).
-      bool has_factors() const;
-      /// Factors for the current pairs from the body system.
-      void estimate(const VectorType &r_b,
-                    const MatrixType &K_b,
-                    const double      dt,
-                    const bool        predictor);
-      /// Whether the strategy keeps the factors of the last estimate at this
-      /// iterate (so that the body system need not be read).
-      bool holds_factors(const bool predictor) const;
+      /// A point was evaluated and searched: factors for its pairs (the
+      /// strategy reads @p system only if it needs to).
+      void at_point(const contact::SystemView &system);
+      /// Newton accepted the point: whether its factors were estimated anew
+      /// (collective).
+      bool at_iterate(const contact::SystemView &system);
       /// The strategy's bound near convergence: whether it tightened the
       /// factors (collective); if so, the next estimate is not frozen.
       bool tighten();
       /// The solve converged: the strategy sees the body system.
-      void
-      converged(const VectorType &r_b, const MatrixType &K_b, const double dt);
-      bool reads_converged_system() const
-      {
-        return strategy.reads_converged_system();
-      }
+      void converged(const contact::SystemView &system);
 
-      /// Contact forces and stiffness of the pairs with the current factors,
-      /// times @p sign, into what is given (either may be null).
+      /// Contact forces and stiffness of the pairs with their factors into
+      /// what is given (either may be null).
       void add(MatrixType  *matrix,
                VectorType  *residual,
-               const double sign,
                const double dt,
-               const bool   newton);
+               const bool   newton) const;
 
       /// Whether the set of active pairs changed since the last call
       /// (collective); locked pairs (chatter guard) count as active.
       bool changed();
 
-      const std::vector<double> &factors() const { return epsilon; }
+      /// One per pair of the last search, in its order.
+      const std::vector<double> &factors() const
+      {
+        Assert(factors_match(), dealii::ExcInternalError());
+        return epsilon;
+      }
       /// For the iteration log: the strategy's summary and the pairs each
       /// tool closed and opened since the last call of changed().
       std::string info() const;
 
     private:
+      /// Whether the factors are those of the current pairs, pair by pair
+      /// (node and tool); on this rank.
+      bool factors_match() const;
+      /// The factors' pairs become the current ones.
+      void keep_keys();
       void find_pairs(const VectorType &v, const double dt);
       /// The pairs each tool closed and opened since the last call (log).
       void count_changes();
@@ -95,9 +92,11 @@ namespace formsolve
       dealii::TimerOutput           &timer;
       contact::ContactSearch<dim>    search_;
       std::vector<double>            epsilon;
-      std::vector<bool>              last_active;
-      std::vector<char>              last_record_status;
-      std::vector<unsigned int>      closed, opened;
+      /// (node, tool) of each factor.
+      std::vector<std::pair<unsigned int, unsigned int>> keys;
+      std::vector<bool>                                  last_active;
+      std::vector<char>                                  last_record_status;
+      std::vector<unsigned int>                          closed, opened;
     };
   } // namespace solver
 } // namespace formsolve

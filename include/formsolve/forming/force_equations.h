@@ -48,13 +48,13 @@ namespace formsolve
                        const std::vector<bool>   &active);
       bool active(const unsigned int j) const { return on[j]; }
       bool any_active() const;
-      /// The trial at step length @p alpha along the last correction.
-      void set_step_length(const double alpha);
-      /// The trial becomes the iterate.
-      void accept() { u = u_trial; }
-      /// The accepted and the trial velocity of equation j (mm/s).
+      /// The tools' velocities at step length @p alpha along the last
+      /// correction (mm/s, one per equation).
+      std::vector<double> speeds_at(const double alpha) const;
+      /// Velocities @p speeds (from speeds_at()) are the iterate's.
+      void accept(const std::vector<double> &speeds) { u = speeds; }
+      /// The accepted velocity of equation j (mm/s).
       double velocity(const unsigned int j) const { return u[j]; }
-      const std::vector<double> &trial_velocities() const { return u_trial; }
       /// Moves the controlled tools at @p velocities.
       void move_tools(const std::vector<double> &velocities,
                       tools::ToolSet<dim>       &set) const;
@@ -94,7 +94,7 @@ namespace formsolve
     private:
       std::vector<unsigned int> tools;
       std::vector<VectorType>   b, c;
-      std::vector<double>       e, rho, u, u_trial, du;
+      std::vector<double>       e, rho, u, du;
       std::vector<bool>         on, has_contact;
       // The nearest inactive pair of each tool: gap and d . n.
       std::vector<double> nearest_gap, nearest_dn;

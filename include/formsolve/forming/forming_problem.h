@@ -13,6 +13,7 @@
 #include <formsolve/forming/body_operator.h>
 #include <formsolve/forming/contact_operator.h>
 #include <formsolve/forming/force_equations.h>
+#include <formsolve/forming/iterate.h>
 #include <formsolve/linear/factor_reuse.h>
 #include <formsolve/linear/linear_solver.h>
 #include <formsolve/newton/nonlinear_problem.h>
@@ -41,8 +42,8 @@ namespace formsolve
       /// A step of @p dt begins (statistics of the step are reset).
       void begin_step(const double dt);
       /// A Newton solve of the step begins, from the state's velocity and
-      /// force-controlled tools' velocities: the state's velocity is the
-      /// iterate.
+      /// force-controlled tools' velocities; the accepted iterate's velocity
+      /// is written into the state's.
       void begin_solve();
       /// The solve has converged: the strategy sees the body system of the
       /// converged iterate (contact::PenaltyStrategy::converged).
@@ -98,31 +99,21 @@ namespace formsolve
       std::string info() const override;
 
     private:
-      /// The point evaluated last: the trial, until it is accepted. The one
-      /// matrix holds the tangent of at most this point.
-      struct Point
-      {
-        VectorType    velocity;
-        Linearisation kind     = Linearisation::secant;
-        bool          tangent  = true;  // the matrix holds its tangent
-        bool          accepted = false; // it is the iterate now
-      };
-
-      /// Contact search, body residual (and tangent), factors, contact terms
-      /// and force equations at @p v; returns |r|.
-      double assemble(const VectorType   &v,
-                      const Linearisation kind,
-                      const bool          with_tangent);
-      /// The tangent of the last point, if it was left for later.
+      /// Search, body residual (and tangent), factors, contact forces and
+      /// force equations at the point; returns |r|.
+      double assemble(const bool with_tangent);
+      /// The body residual r_b (and tangent K_b) of the point.
+      void evaluate_body(const bool with_tangent);
+      /// r = r_b + contact forces with the pairs' factors, and the force
+      /// equations.
+      void add_contact_forces();
+      /// The point's tangent, if it was left for later.
       void complete_tangent();
-      /// The contact terms with the current factors (stiffness into the
-      /// matrix with @p with_tangent), and the force equations.
-      void add_contact_terms(const bool with_tangent);
-      /// The contact stiffness taken out of the matrix: the body tangent K_b
-      /// an adaptive estimate reads.
-      void remove_contact_stiffness();
-      /// At an accepted iterate: new adaptive factors from its body system;
-      /// -1 if nothing changed, else the new |r|.
+      /// The point's body system (r_b, K_b), its tangent assembled when a
+      /// strategy first reads it.
+      contact::SystemView body_system();
+      /// At an accepted iterate: the strategy's factors from its body
+      /// system; -1 if nothing changed, else the new |r|.
       double update_penalty();
       /// K dv = -r with the tangent of the iterate (bordered by the force
       /// equations).
@@ -149,19 +140,18 @@ namespace formsolve
       ContactOperator<dim>   contact;
       ForceEquations<dim>    forces;
 
+      /// The tangent of at most the point (Iterate::matrix says what).
       MatrixType matrix;
-      /// The residual of the last point and its body part r_b (no contact),
-      /// kept for penalty estimates at accepted iterates.
-      VectorType residual, body_residual;
-      /// The matrix holds K_b + K_c (else K_b).
-      bool                          matrix_has_contact = false;
+      /// The residual of the point and its body part r_b (no contact).
+      VectorType                    residual, body_residual;
       std::unique_ptr<LinearSolver> linear_solver;
       FactorReuse                   factor_reuse;
 
-      VectorType *iterate = nullptr; // the state's velocity
-      VectorType  direction, ghost;  // ghost: the point, with ghost values
-      Point       point;
-      Evaluation  last_evaluation;
+      /// The point evaluated last; once accepted, its velocity is also the
+      /// state's.
+      Iterate    point;
+      VectorType direction, ghost; // ghost: the point, with ghost values
+      Evaluation last_evaluation;
 
       double        dt = 0, f_scale = 0;
       unsigned int  penalty_updates     = 0; // at Newton iterates of the step

@@ -120,7 +120,7 @@ namespace formsolve
       // dv: at active nodes the velocity change that leaves exactly delta of
       // penetration at the end of the step, zero elsewhere (u' of the method).
       const double                  dt = system.dt;
-      TrilinosWrappers::MPI::Vector dv(*system.residual), w(*system.residual);
+      TrilinosWrappers::MPI::Vector dv(system.residual()), w(system.residual());
       dv = 0;
       for (unsigned int k = 0; k < n; ++k)
         if (set.pairs[k].active)
@@ -132,15 +132,15 @@ namespace formsolve
               dv[set.nodes[pair.node].dofs[a]] += move * pair.normal[a];
           }
       dv.compress(VectorOperation::add);
-      system.constraints->set_zero(dv);
+      system.constraints().set_zero(dv);
       // projection: the method as published, F = n.(r_b + K_b dv); force: its
       // limit dv -> 0, F = n.r_b, the force the node carries now.
       if (projection)
-        system.matrix->vmult(w, dv);
+        system.matrix().vmult(w, dv);
       else
         w = 0;
-      w += *system.residual;
-      system.constraints->set_zero(w);
+      w += system.residual();
+      system.constraints().set_zero(w);
 
       eps.resize(n);
       stiffness.resize(n);
@@ -153,7 +153,7 @@ namespace formsolve
             {
               force += pair.normal[a] * w[dofs[a]];
               K_nn += pair.normal[a] * pair.normal[a] *
-                      system.matrix->diag_element(dofs[a]);
+                      system.matrix().diag_element(dofs[a]);
             }
           // Stiffness in displacement units (N/mm): K_b carries 1/dt.
           stiffness[k] = std::max(K_nn, 0.) / dt;
@@ -216,8 +216,6 @@ namespace formsolve
                                         ContactState              &state,
                                         std::vector<double>       &epsilon)
     {
-      Assert(system.residual != nullptr && system.matrix != nullptr,
-             ExcInternalError());
       Assert(state.size() == set.nodes.size() * tools.size(),
              ExcInternalError());
       const unsigned int      n      = set.pairs.size();
@@ -228,7 +226,7 @@ namespace formsolve
 
       // Freeze only when the active set repeats on every rank: a decision
       // per rank would make the factors depend on the partition.
-      const MPI_Comm comm = system.residual->get_mpi_communicator();
+      const MPI_Comm comm = system.comm();
       const bool     reuse =
         Utilities::MPI::min(int(freeze && status == last_status &&
                                 last_epsilon.size() == n),
@@ -257,15 +255,17 @@ namespace formsolve
           held    = per_step;
           // The last converged solve's estimate (or the fixed penalty), times
           // the strict scale, within the bounds at the solve's first iterate.
+          // Read on every rank, with pairs or without: the first read
+          // assembles the tangent (collective).
+          const auto &K_b = system.matrix();
           stiffness_of.resize(n);
           for (unsigned int k = 0; k < n; ++k)
             {
               const auto &pair = set.pairs[k];
               double      K_nn = 0;
               for (unsigned int a = 0; a < dim; ++a)
-                K_nn +=
-                  pair.normal[a] * pair.normal[a] *
-                  system.matrix->diag_element(set.nodes[pair.node].dofs[a]);
+                K_nn += pair.normal[a] * pair.normal[a] *
+                        K_b.diag_element(set.nodes[pair.node].dofs[a]);
               stiffness_of[k] = std::max(K_nn, 0.) / system.dt;
               epsilon[k]      = bounded(start_factor(set, tools, state, k) *
                                      state(pair.node, pair.tool).scale,
@@ -285,8 +285,8 @@ namespace formsolve
               for (unsigned int k = 0; k < n; ++k)
                 masters[k] = bounded(eps[k], stiffness_of[k]);
               interpolate_hanging(set,
-                                  *system.constraints,
-                                  *system.residual,
+                                  system.constraints(),
+                                  system.residual(),
                                   is_hanging,
                                   masters);
               for (unsigned int k = 0; k < n; ++k)
@@ -315,11 +315,38 @@ namespace formsolve
     }
 
     template <int dim>
-    bool AdaptivePenalty<dim>::holds_factors(const ContactSet<dim>     &set,
-                                             const tools::ToolSet<dim> &tools,
-                                             const ContactState        &state,
-                                             const bool     predictor,
-                                             const MPI_Comm comm) const
+    void AdaptivePenalty<dim>::at_point(const ContactSet<dim>     &set,
+                                        const tools::ToolSet<dim> &tools,
+                                        const SystemView          &system,
+                                        ContactState              &state,
+                                        std::vector<double>       &epsilon,
+                                        const bool                 same_pairs)
+    {
+      // Line-search trials keep the factors of the iterate; new pairs are
+      // estimated at once (which reads the trial's body system).
+      if (!same_pairs)
+        estimate(set, tools, system, state, epsilon);
+    }
+
+    template <int dim>
+    bool AdaptivePenalty<dim>::at_iterate(const ContactSet<dim>     &set,
+                                          const tools::ToolSet<dim> &tools,
+                                          const SystemView          &system,
+                                          ContactState              &state,
+                                          std::vector<double>       &epsilon)
+    {
+      if (holds(set, tools, state, system.predictor, system.comm()))
+        return false;
+      estimate(set, tools, system, state, epsilon);
+      return true;
+    }
+
+    template <int dim>
+    bool AdaptivePenalty<dim>::holds(const ContactSet<dim>     &set,
+                                     const tools::ToolSet<dim> &tools,
+                                     const ContactState        &state,
+                                     const bool                 predictor,
+                                     const MPI_Comm             comm) const
     {
       // The branches of estimate() that do not read the system.
       if (per_step)
@@ -358,8 +385,8 @@ namespace formsolve
       estimate_at(set, tools, system, state, eps, stiffness);
       std::vector<bool> is_hanging;
       interpolate_hanging(set,
-                          *system.constraints,
-                          *system.residual,
+                          system.constraints(),
+                          system.residual(),
                           is_hanging,
                           eps);
       for (unsigned int k = 0; k < set.pairs.size(); ++k)

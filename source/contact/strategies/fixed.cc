@@ -6,11 +6,12 @@ namespace formsolve
   namespace contact
   {
     template <int dim>
-    void FixedPenalty<dim>::estimate(const ContactSet<dim>     &set,
+    void FixedPenalty<dim>::at_point(const ContactSet<dim>     &set,
                                      const tools::ToolSet<dim> &tools,
                                      const SystemView &,
                                      ContactState &,
-                                     std::vector<double> &epsilon)
+                                     std::vector<double> &epsilon,
+                                     const bool)
     {
       epsilon.resize(set.pairs.size());
       for (unsigned int k = 0; k < set.pairs.size(); ++k)

@@ -22,24 +22,30 @@ namespace formsolve
     public:
       AdaptivePenalty(const parameters::Contact &p, const bool strict);
 
-      bool needs_system() const override { return true; }
       void begin_solve() override
       {
         last_epsilon.clear();
         held = false;
       }
-      void estimate(const ContactSet<dim>     &set,
+      void at_point(const ContactSet<dim>     &set,
                     const tools::ToolSet<dim> &tools,
                     const SystemView          &system,
                     ContactState              &state,
-                    std::vector<double>       &epsilon) override;
-      bool holds_factors(const ContactSet<dim>     &set,
-                         const tools::ToolSet<dim> &tools,
-                         const ContactState        &state,
-                         const bool                 predictor,
-                         const MPI_Comm             comm) const override;
-      /// per_step: the next solve's factors are estimated at convergence.
-      bool        reads_converged_system() const override { return per_step; }
+                    std::vector<double>       &epsilon,
+                    const bool                 same_pairs) override;
+      bool at_iterate(const ContactSet<dim>     &set,
+                      const tools::ToolSet<dim> &tools,
+                      const SystemView          &system,
+                      ContactState              &state,
+                      std::vector<double>       &epsilon) override;
+      /// The factors of every pair in @p set at the iterate of @p system
+      /// (unconditionally; within the strategy's rules of holding and
+      /// freezing).
+      void        estimate(const ContactSet<dim>     &set,
+                           const tools::ToolSet<dim> &tools,
+                           const SystemView          &system,
+                           ContactState              &state,
+                           std::vector<double>       &epsilon);
       void        converged(const ContactSet<dim>     &set,
                             const tools::ToolSet<dim> &tools,
                             const SystemView          &system,
@@ -64,6 +70,14 @@ namespace formsolve
       unsigned int n_active = 0;
 
     private:
+      /// Whether estimate() at @p set would return the factors of its last
+      /// call without reading the system (factors held or frozen); the same
+      /// on all ranks of @p comm.
+      bool holds(const ContactSet<dim>     &set,
+                 const tools::ToolSet<dim> &tools,
+                 const ContactState        &state,
+                 const bool                 predictor,
+                 const MPI_Comm             comm) const;
       /// Smallest and largest factor, largest factor/stiffness ratio and
       /// the count of the active pairs, over all ranks.
       void record_statistics(const std::vector<bool>   &active,

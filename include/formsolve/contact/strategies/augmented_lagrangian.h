@@ -17,15 +17,23 @@ namespace formsolve
     public:
       explicit AugmentedLagrangian(std::unique_ptr<PenaltyStrategy<dim>> inner);
 
-      bool needs_system() const override { return inner->needs_system(); }
       void begin_solve() override { inner->begin_solve(); }
-      void estimate(const ContactSet<dim>     &set,
+      void at_point(const ContactSet<dim>     &set,
                     const tools::ToolSet<dim> &tools,
                     const SystemView          &system,
                     ContactState              &state,
-                    std::vector<double>       &epsilon) override
+                    std::vector<double>       &epsilon,
+                    const bool                 same_pairs) override
       {
-        inner->estimate(set, tools, system, state, epsilon);
+        inner->at_point(set, tools, system, state, epsilon, same_pairs);
+      }
+      bool at_iterate(const ContactSet<dim>     &set,
+                      const tools::ToolSet<dim> &tools,
+                      const SystemView          &system,
+                      ContactState              &state,
+                      std::vector<double>       &epsilon) override
+      {
+        return inner->at_iterate(set, tools, system, state, epsilon);
       }
       void converged(const ContactSet<dim>     &set,
                      const tools::ToolSet<dim> &tools,

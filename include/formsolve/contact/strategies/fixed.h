@@ -11,11 +11,13 @@ namespace formsolve
     class FixedPenalty : public PenaltyStrategy<dim>
     {
     public:
-      void        estimate(const ContactSet<dim>     &set,
+      /// At every point: the factors follow from the pairs alone.
+      void        at_point(const ContactSet<dim>     &set,
                            const tools::ToolSet<dim> &tools,
                            const SystemView          &system,
                            ContactState              &state,
-                           std::vector<double>       &epsilon) override;
+                           std::vector<double>       &epsilon,
+                           const bool                 same_pairs) override;
       std::string name() const override { return "fixed"; }
     };
   } // namespace contact
