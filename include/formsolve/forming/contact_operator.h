@@ -66,6 +66,13 @@ namespace formsolve
       /// (collective); locked pairs (chatter guard) count as active.
       bool changed();
 
+      /// factors(), or zeros if the pairs have none (for output).
+      std::vector<double> factors_or_zero() const
+      {
+        return factors_match()
+                 ? epsilon
+                 : std::vector<double>(state.contact_set.pairs.size(), 0.);
+      }
       /// One per pair of the last search, in its order.
       const std::vector<double> &factors() const
       {

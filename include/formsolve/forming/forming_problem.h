@@ -54,10 +54,11 @@ namespace formsolve
       /// after begin_step().
       void predict(VectorType &v);
 
-      /// Factors of the pairs of the last assembly (one per pair).
-      const std::vector<double> &penalty_factors() const
+      /// One factor per pair of the last search (N/mm): 0 where the pairs
+      /// have none yet (before the first solve).
+      std::vector<double> penalty_factors() const
       {
-        return contact.factors();
+        return contact.factors_or_zero();
       }
       /// Velocity of force control j along its direction at the accepted
       /// iterate (mm/s).
