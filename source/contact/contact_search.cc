@@ -113,13 +113,16 @@ namespace formsolve
     }
 
     template <int dim>
-    void ContactSearch<dim>::evaluate(const tools::ToolSet<dim> &tools,
-                                      const VectorType          &u,
-                                      const VectorType          &v,
-                                      const double               dt,
-                                      const ContactState        &state,
-                                      ContactSet<dim>           &set) const
+    void ContactSearch<dim>::evaluate(
+      const tools::ToolSet<dim>         &tools,
+      const std::vector<Tensor<1, dim>> &tool_velocities,
+      const VectorType                  &u,
+      const VectorType                  &v,
+      const double                       dt,
+      const ContactState                &state,
+      ContactSet<dim>                   &set) const
     {
+      AssertDimension(tool_velocities.size(), tools.size());
       set.pairs.clear();
       for (unsigned int k = 0; k < set.nodes.size(); ++k)
         {
@@ -141,7 +144,7 @@ namespace formsolve
                 continue;
               pair.node              = k;
               pair.tool              = t;
-              pair.relative_velocity = vel - tools[t].velocity();
+              pair.relative_velocity = vel - tool_velocities[t];
               pair.predicted_gap =
                 pair.gap + (pair.normal * pair.relative_velocity) * dt;
               pair.area  = std::max(0., -(pair.normal * node.area_vector));

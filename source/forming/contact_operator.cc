@@ -43,9 +43,13 @@ namespace formsolve
     }
 
     template <int dim>
-    void ContactOperator<dim>::find_pairs(const VectorType &v, const double dt)
+    void ContactOperator<dim>::find_pairs(
+      const VectorType                  &v,
+      const std::vector<Tensor<1, dim>> &tool_velocities,
+      const double                       dt)
     {
       search_.evaluate(state.tools,
+                       tool_velocities,
                        state.displacement_ghost,
                        v,
                        dt,
@@ -54,10 +58,13 @@ namespace formsolve
     }
 
     template <int dim>
-    void ContactOperator<dim>::search(const VectorType &v, const double dt)
+    void ContactOperator<dim>::search(
+      const VectorType                  &v,
+      const std::vector<Tensor<1, dim>> &tool_velocities,
+      const double                       dt)
     {
       TimerOutput::Scope t(timer, "contact");
-      find_pairs(v, dt);
+      find_pairs(v, tool_velocities, dt);
       state.contact_state.track_status(state.contact_set,
                                        prm.contact.max_status_flips);
     }
@@ -71,7 +78,7 @@ namespace formsolve
       // No status tracking: the status of the previous solve is what
       // keep_contact() reads.
       ghost = v;
-      find_pairs(ghost, dt);
+      find_pairs(ghost, state.tools.velocities(), dt);
       VectorType change(state.owned, state.comm);
       contact::keep_contact(state.contact_set,
                             state.contact_state,
@@ -108,7 +115,7 @@ namespace formsolve
     template <int dim>
     void ContactOperator<dim>::at_point(const contact::SystemView &system)
     {
-      TimerOutput::Scope t(timer, "penalty estimate");
+      TimerOutput::Scope t(timer, estimate_section);
       // Collective: decide on all ranks alike.
       const bool same =
         Utilities::MPI::min(int(factors_match()), state.comm) != 0;
@@ -124,7 +131,7 @@ namespace formsolve
     template <int dim>
     bool ContactOperator<dim>::at_iterate(const contact::SystemView &system)
     {
-      TimerOutput::Scope t(timer, "penalty estimate");
+      TimerOutput::Scope t(timer, estimate_section);
       Assert(factors_match(), ExcInternalError());
       return strategy.at_iterate(state.contact_set,
                                  state.tools,
@@ -149,7 +156,7 @@ namespace formsolve
     template <int dim>
     void ContactOperator<dim>::converged(const contact::SystemView &system)
     {
-      TimerOutput::Scope t(timer, "penalty estimate");
+      TimerOutput::Scope t(timer, estimate_section);
       strategy.converged(state.contact_set,
                          state.tools,
                          system,

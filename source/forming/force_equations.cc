@@ -71,6 +71,18 @@ namespace formsolve
     }
 
     template <int dim>
+    std::vector<Tensor<1, dim>>
+    ForceEquations<dim>::tool_velocities(const std::vector<double> &speeds,
+                                         const tools::ToolSet<dim> &set) const
+    {
+      auto velocities = set.velocities();
+      for (unsigned int j = 0; j < size(); ++j)
+        if (on[j])
+          velocities[tools[j]] = set.velocity_along(tools[j], speeds[j]);
+      return velocities;
+    }
+
+    template <int dim>
     void
     ForceEquations<dim>::assemble(const contact::ContactSet<dim>  &set,
                                   const std::vector<double>       &epsilon,

@@ -72,7 +72,7 @@ namespace formsolve
       dt = step_dt;
       body.begin_step();
       point.matrix    = Iterate::Matrix::none;
-      penalty_updates = 0;
+      iterates        = 0;
       corrections     = 0;
       step_max_linear = 0;
       step_condition  = 0;
@@ -101,8 +101,9 @@ namespace formsolve
     double FormingProblem<dim>::assemble(const bool with_tangent)
     {
       ghost = point.velocity;
-      forces.move_tools(point.tool_speeds, state.tools);
-      contact.search(ghost, dt);
+      contact.search(ghost,
+                     forces.tool_velocities(point.tool_speeds, state.tools),
+                     dt);
       evaluate_body(with_tangent);
       contact.at_point(body_system());
       add_contact_forces();
@@ -180,8 +181,15 @@ namespace formsolve
                                    Assert(point.matrix !=
                                             Iterate::Matrix::body_and_contact,
                                           ExcInternalError());
-                                   if (!point.has_tangent())
-                                     evaluate_body(true);
+                                   if (point.has_tangent())
+                                     return;
+                                   // Timed as an assembly, not as the
+                                   // estimate that asked for it.
+                                   const auto section =
+                                     ContactOperator<dim>::estimate_section;
+                                   timer.leave_subsection(section);
+                                   evaluate_body(true);
+                                   timer.enter_subsection(section);
                                  });
     }
 
@@ -190,8 +198,8 @@ namespace formsolve
     {
       const bool had_tangent = point.has_tangent();
       const bool estimated   = contact.at_iterate(body_system());
-      // Newton estimates here once per accepted iterate, the predictor first.
-      penalty_updates += estimated;
+      // The first accepted iterate of a step is its predictor.
+      ++iterates;
       if (!estimated && point.has_tangent() == had_tangent)
         return -1;
       add_contact_forces();
@@ -242,6 +250,7 @@ namespace formsolve
       state.velocity = point.velocity;
       point.accepted = true;
       forces.accept(point.tool_speeds);
+      forces.move_tools(point.tool_speeds, state.tools);
       body.accept(state.comm, prm.nonlinear.log_iterations);
       Accepted     a;
       const double r       = update_penalty();

@@ -25,6 +25,7 @@ namespace formsolve
     {
       contact::ContactSearch<dim>(prm.contact.search_distance)
         .evaluate(state.tools,
+                  state.tools.velocities(),
                   state.displacement_ghost,
                   state.velocity_ghost,
                   0.,

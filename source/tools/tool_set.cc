@@ -254,6 +254,15 @@ namespace formsolve
     }
 
     template <int dim>
+    std::vector<Tensor<1, dim>> ToolSet<dim>::velocities() const
+    {
+      std::vector<Tensor<1, dim>> v;
+      for (const auto &tool : tools)
+        v.push_back(tool->velocity());
+      return v;
+    }
+
+    template <int dim>
     double ToolSet<dim>::speed_along(const unsigned int i) const
     {
       return tools[i]->velocity() * motions[i].direction;

@@ -36,14 +36,16 @@ namespace formsolve
                         ContactSet<dim>               &set) const;
 
       /// Gaps at the current positions (X + displacement) and predicted gaps
-      /// after moving with @p velocity for @p dt. Vectors must be ghosted.
+      /// after moving with @p velocity for @p dt, the tools at
+      /// @p tool_velocities (one per tool, mm/s). Vectors must be ghosted.
       /// Multipliers (gap shifts) come from @p state.
-      void evaluate(const tools::ToolSet<dim> &tools,
-                    const VectorType          &displacement,
-                    const VectorType          &velocity,
-                    const double               dt,
-                    const ContactState        &state,
-                    ContactSet<dim>           &set) const;
+      void evaluate(const tools::ToolSet<dim>         &tools,
+                    const std::vector<Tensor<1, dim>> &tool_velocities,
+                    const VectorType                  &displacement,
+                    const VectorType                  &velocity,
+                    const double                       dt,
+                    const ContactState                &state,
+                    ContactSet<dim>                   &set) const;
 
     private:
       double search_distance;

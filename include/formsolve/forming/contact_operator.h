@@ -24,6 +24,9 @@ namespace formsolve
     class ContactOperator
     {
     public:
+      /// The timer section of the strategies' estimates.
+      static constexpr const char *estimate_section = "penalty estimate";
+
       ContactOperator(const parameters::Run         &prm,
                       state::State<dim>             &state,
                       contact::PenaltyStrategy<dim> &strategy,
@@ -34,10 +37,12 @@ namespace formsolve
       /// A Newton solve of a step begins.
       void begin_solve();
 
-      /// The pairs at the ghosted velocity @p v with the tools at their
-      /// current velocities, for a step of @p dt; their status enters the
-      /// contact state.
-      void search(const VectorType &v, const double dt);
+      /// The pairs at the ghosted velocity @p v with the tools at
+      /// @p tool_velocities (one per tool), for a step of @p dt; their
+      /// status enters the contact state.
+      void search(const VectorType                          &v,
+                  const std::vector<dealii::Tensor<1, dim>> &tool_velocities,
+                  const double                               dt);
       /// The step's predictor @p v corrected where it would lift nodes in
       /// contact off their tools (Nonlinear solver/Predictor = keep
       /// contact); @p ghost: a ghosted vector to search with.
@@ -89,7 +94,10 @@ namespace formsolve
       bool factors_match() const;
       /// The factors' pairs become the current ones.
       void keep_keys();
-      void find_pairs(const VectorType &v, const double dt);
+      void
+      find_pairs(const VectorType                          &v,
+                 const std::vector<dealii::Tensor<1, dim>> &tool_velocities,
+                 const double                               dt);
       /// The pairs each tool closed and opened since the last call (log).
       void count_changes();
 

@@ -58,6 +58,11 @@ namespace formsolve
       /// Moves the controlled tools at @p velocities.
       void move_tools(const std::vector<double> &velocities,
                       tools::ToolSet<dim>       &set) const;
+      /// The velocities of all tools of @p set with the controlled ones at
+      /// @p speeds (the set is not changed).
+      std::vector<dealii::Tensor<1, dim>>
+      tool_velocities(const std::vector<double> &speeds,
+                      const tools::ToolSet<dim> &set) const;
 
       /// Coupling terms of the controlled tools' pairs at the current
       /// iterate. @p targets: the set forces on the modelled part (N).

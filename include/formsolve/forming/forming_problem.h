@@ -130,9 +130,9 @@ namespace formsolve
       }
       /// A tool is under force control in this step.
       bool controlled() const { return forces.any_active(); }
-      /// Whether the iterate is still the step's predictor (no estimate at
-      /// a Newton iterate yet).
-      bool predictor() const { return penalty_updates == 0; }
+      /// Whether the point is still the step's predictor (no iterate of the
+      /// step accepted before it).
+      bool predictor() const { return iterates == 0; }
 
       const parameters::Run &prm;
       state::State<dim>     &state;
@@ -155,7 +155,7 @@ namespace formsolve
       Evaluation last_evaluation;
 
       double        dt = 0, f_scale = 0;
-      unsigned int  penalty_updates     = 0; // at Newton iterates of the step
+      unsigned int  iterates            = 0; // accepted in the step
       unsigned int  corrections         = 0; // linear solves of the step
       unsigned int  step_max_linear     = 0;
       double        step_condition      = 0;

@@ -83,6 +83,14 @@ namespace formsolve
       /// under force control.
       void   set_speed_along(const unsigned int i, const double u);
       double speed_along(const unsigned int i) const;
+      /// The velocity tool @p i would have at speed @p u along its Motion
+      /// direction (mm/s); the tool is not changed.
+      Tensor<1, dim> velocity_along(const unsigned int i, const double u) const
+      {
+        return u * motions[i].direction;
+      }
+      /// Every tool's velocity now (mm/s).
+      std::vector<Tensor<1, dim>> velocities() const;
 
       /// A step of @p dt begins: a prescribed tool with a Stroke moves so
       /// that it lands on it exactly and then stands.
