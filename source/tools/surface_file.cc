@@ -43,6 +43,14 @@ namespace formsolve
       return m;
     }
 
+    bool has_area(const SurfaceMesh &m, const std::array<unsigned int, 3> &t)
+    {
+      const Tensor<1, 3> a = m.vertices[t[1]] - m.vertices[t[0]],
+                         b = m.vertices[t[2]] - m.vertices[t[0]];
+      return cross_product_3d(a, b).norm() >
+             1e-12 * (a.norm_square() + b.norm_square());
+    }
+
     SurfaceMesh read_surface(const std::string &file, const double facet_size)
     {
       std::string extension = std::filesystem::path(file).extension();

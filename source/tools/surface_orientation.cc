@@ -2,10 +2,19 @@
 
 #include <formsolve/tools/surface_orientation.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Face_filtered_graph.h>
+#include <CGAL/boost/graph/helpers.h>
+
 #include <algorithm>
-#include <map>
+#include <array>
+#include <optional>
 #include <sstream>
-#include <utility>
 #include <vector>
 
 namespace formsolve
@@ -16,9 +25,14 @@ namespace formsolve
 
     namespace
     {
-      std::string edge_text(const SurfaceMesh &m,
-                            const unsigned int a,
-                            const unsigned int b)
+      namespace PMP      = CGAL::Polygon_mesh_processing;
+      using SoupKernel   = CGAL::Exact_predicates_inexact_constructions_kernel;
+      using SoupMesh     = CGAL::Surface_mesh<SoupKernel::Point_3>;
+      using SoupPolygons = std::vector<std::vector<std::size_t>>;
+      using SoupPoints   = std::vector<SoupKernel::Point_3>;
+
+      std::string
+      edge_text(const SurfaceMesh &m, const std::size_t a, const std::size_t b)
       {
         std::ostringstream s;
         const auto        &p = m.vertices[a], &q = m.vertices[b];
@@ -27,21 +41,69 @@ namespace formsolve
         return s.str();
       }
 
-      /// Whether triangle @p t runs along its edge from a to b (rather than
-      /// from b to a).
-      bool runs_forward(const std::array<unsigned int, 3> &t,
-                        const unsigned int                 a,
-                        const unsigned int                 b)
+      /// What CGAL's soup orientation did: the polygons it reversed, and
+      /// the first edge of three or more polygons.
+      struct Seen
       {
-        for (unsigned int k = 0; k < 3; ++k)
-          if (t[k] == a && t[(k + 1) % 3] == b)
-            return true;
-        return false;
-      }
+        std::vector<bool>                         reversed;
+        std::optional<std::array<std::size_t, 2>> fin;
+      };
 
-      void turn_over(std::array<unsigned int, 3> &t)
+      /// CGAL copies its visitor: this one writes into a Seen.
+      struct Watch : PMP::Default_orientation_visitor
       {
-        std::swap(t[1], t[2]);
+        Seen *seen;
+        void  non_manifold_edge(const std::size_t a,
+                                const std::size_t b,
+                                const std::size_t n_polygons)
+        {
+          if (!seen->fin && n_polygons > 2)
+            seen->fin = std::array<std::size_t, 2>{{a, b}};
+        }
+        void polygon_orientation_reversed(const std::size_t p)
+        {
+          seen->reversed[p] = !seen->reversed[p];
+        }
+      };
+
+      /// Settles the side of one connected part (@p ffg, polygons
+      /// @p members of the oriented soup): an open part keeps the file's
+      /// majority, a closed one faces outwards.
+      template <class Part>
+      void settle_part(const Part                     &ffg,
+                       const std::vector<std::size_t> &members,
+                       SoupPolygons                   &polygons,
+                       const std::vector<bool>        &reversed,
+                       SurfaceOrientation             &report)
+      {
+        std::size_t n_turned = 0;
+        for (const auto f : members)
+          n_turned += reversed[f];
+        const bool open = !CGAL::is_closed(ffg);
+        bool       turn_all;
+        if (open)
+          {
+            ++report.open_parts;
+            turn_all = 2 * n_turned > members.size();
+          }
+        else
+          turn_all = !PMP::is_outward_oriented(ffg);
+        if (turn_all)
+          {
+            for (const auto f : members)
+              std::reverse(polygons[f].begin(), polygons[f].end());
+            n_turned = members.size() - n_turned;
+          }
+        // A closed part whose majority was turned was inside out; the rest
+        // disagreed with their neighbours.
+        if (2 * n_turned > members.size())
+          {
+            ++report.turned_out;
+            report.turned += members.size() - n_turned;
+          }
+        else
+          report.turned += n_turned;
+        ++report.parts;
       }
     } // namespace
 
@@ -62,164 +124,65 @@ namespace formsolve
       return text;
     }
 
-    namespace
-    {
-      using EdgeMap = std::map<std::pair<unsigned int, unsigned int>,
-                               std::vector<unsigned int>>;
-
-      /// Drops the triangles without area (they carry no normal); returns
-      /// how many.
-      unsigned int drop_degenerate(SurfaceMesh &m)
-      {
-        const auto n_before = m.triangles.size();
-        const auto flat     = [&](const std::array<unsigned int, 3> &t) {
-          const Tensor<1, 3> a = m.vertices[t[1]] - m.vertices[t[0]],
-                             b = m.vertices[t[2]] - m.vertices[t[0]];
-          return !(cross_product_3d(a, b).norm() >
-                   1e-12 * (a.norm_square() + b.norm_square()));
-        };
-        m.triangles.erase(std::remove_if(m.triangles.begin(),
-                                         m.triangles.end(),
-                                         flat),
-                          m.triangles.end());
-        return n_before - m.triangles.size();
-      }
-
-      /// The triangles at each undirected edge; more than two is an error.
-      EdgeMap edges_of(const SurfaceMesh &m, const std::string &file)
-      {
-        EdgeMap edges;
-        for (unsigned int f = 0; f < m.triangles.size(); ++f)
-          for (unsigned int k = 0; k < 3; ++k)
-            {
-              const unsigned int a = m.triangles[f][k],
-                                 b = m.triangles[f][(k + 1) % 3];
-              auto &faces          = edges[{std::min(a, b), std::max(a, b)}];
-              faces.push_back(f);
-              AssertThrow(faces.size() <= 2,
-                          ExcMessage(file + ": three or more triangles share " +
-                                     edge_text(m, a, b) +
-                                     ", so the surface has no two sides "
-                                     "there; export the tool as one surface"));
-            }
-        return edges;
-      }
-
-      /// One connected part from @p seed, its triangles turned to agree with
-      /// the seed (@p turned marks them); whether it has a boundary edge.
-      std::vector<unsigned int> walk_part(SurfaceMesh       &m,
-                                          const EdgeMap     &edges,
-                                          const unsigned int seed,
-                                          std::vector<bool> &seen,
-                                          std::vector<bool> &turned,
-                                          bool              &open,
-                                          const std::string &file)
-      {
-        std::vector<unsigned int> members{seed}, stack{seed};
-        seen[seed] = true;
-        open       = false;
-        while (!stack.empty())
-          {
-            const unsigned int f = stack.back();
-            stack.pop_back();
-            for (unsigned int k = 0; k < 3; ++k)
-              {
-                const unsigned int a = m.triangles[f][k],
-                                   b = m.triangles[f][(k + 1) % 3];
-                const auto &faces = edges.at({std::min(a, b), std::max(a, b)});
-                if (faces.size() == 1)
-                  {
-                    open = true;
-                    continue;
-                  }
-                const unsigned int g = faces[0] == f ? faces[1] : faces[0];
-                // The neighbour must run from b to a.
-                const bool agrees = !runs_forward(m.triangles[g], a, b);
-                if (seen[g])
-                  {
-                    AssertThrow(agrees,
-                                ExcMessage(file +
-                                           ": the surface cannot be oriented "
-                                           "(one-sided, like a Moebius "
-                                           "strip) at " +
-                                           edge_text(m, a, b)));
-                    continue;
-                  }
-                seen[g] = true;
-                if (!agrees)
-                  {
-                    turn_over(m.triangles[g]);
-                    turned[g] = true;
-                  }
-                members.push_back(g);
-                stack.push_back(g);
-              }
-          }
-        return members;
-      }
-
-      /// Settles a walked part's side: an open part keeps the file's
-      /// majority, a closed one faces outwards (positive enclosed volume).
-      void settle_part(SurfaceMesh                     &m,
-                       const std::vector<unsigned int> &members,
-                       const std::vector<bool>         &turned,
-                       const bool                       open,
-                       SurfaceOrientation              &report)
-      {
-        unsigned int n_turned = 0;
-        for (const auto f : members)
-          n_turned += turned[f];
-        bool turn_all = 2 * n_turned > members.size();
-        if (open)
-          ++report.open_parts;
-        else
-          {
-            double volume = 0;
-            for (const auto f : members)
-              {
-                const auto &t = m.triangles[f];
-                volume += m.vertices[t[0]] *
-                          cross_product_3d(Tensor<1, 3>(m.vertices[t[1]]),
-                                           Tensor<1, 3>(m.vertices[t[2]]));
-              }
-            turn_all = volume < 0;
-          }
-        if (turn_all)
-          {
-            for (const auto f : members)
-              turn_over(m.triangles[f]);
-            n_turned = members.size() - n_turned;
-          }
-        // A closed part whose majority was turned was inside out; the rest
-        // disagreed with their neighbours.
-        if (2 * n_turned > members.size())
-          {
-            ++report.turned_out;
-            report.turned += members.size() - n_turned;
-          }
-        else
-          report.turned += n_turned;
-      }
-    } // namespace
-
     SurfaceOrientation orient(SurfaceMesh &m, const std::string &file)
     {
       SurfaceOrientation report;
-      report.degenerate = drop_degenerate(m);
+      const auto         n_before = m.triangles.size();
+      m.triangles.erase(std::remove_if(m.triangles.begin(),
+                                       m.triangles.end(),
+                                       [&](const auto &t) {
+                                         return !has_area(m, t);
+                                       }),
+                        m.triangles.end());
+      report.degenerate = n_before - m.triangles.size();
       AssertThrow(!m.triangles.empty(),
                   ExcMessage(file + ": no triangle with an area"));
-      const EdgeMap     edges = edges_of(m, file);
-      const std::size_t n     = m.triangles.size();
-      std::vector<bool> seen(n, false), turned(n, false);
-      for (unsigned int seed = 0; seed < n; ++seed)
-        if (!seen[seed])
-          {
-            bool       open = false;
-            const auto members =
-              walk_part(m, edges, seed, seen, turned, open, file);
-            ++report.parts;
-            settle_part(m, members, turned, open, report);
-          }
+
+      // CGAL orients the soup (neighbours agree across every edge); the
+      // parts' sides are settled after, on the mesh it makes of the soup.
+      SoupPoints points;
+      for (const auto &v : m.vertices)
+        points.emplace_back(v[0], v[1], v[2]);
+      SoupPolygons polygons;
+      for (const auto &t : m.triangles)
+        polygons.push_back({t[0], t[1], t[2]});
+      Seen seen;
+      seen.reversed.assign(polygons.size(), false);
+      Watch watch;
+      watch.seen = &seen;
+      const bool oriented =
+        PMP::orient_polygon_soup(points,
+                                 polygons,
+                                 CGAL::parameters::visitor(watch));
+      AssertThrow(!seen.fin,
+                  ExcMessage(file + ": three or more triangles share " +
+                             edge_text(m, (*seen.fin)[0], (*seen.fin)[1]) +
+                             ", so the surface has no two sides there; export "
+                             "the tool as one surface"));
+      AssertThrow(oriented,
+                  ExcMessage(file +
+                             ": the surface cannot be oriented (one-sided, "
+                             "like a Moebius strip)"));
+
+      SoupMesh mesh;
+      PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+      AssertThrow(mesh.number_of_faces() == polygons.size(),
+                  ExcInternalError());
+      auto part =
+        mesh.add_property_map<SoupMesh::Face_index, std::size_t>("f:part")
+          .first;
+      const std::size_t n_parts = PMP::connected_components(mesh, part);
+      std::vector<std::vector<std::size_t>> members(n_parts);
+      for (const auto f : mesh.faces())
+        members[part[f]].push_back(f.idx());
+      for (std::size_t c = 0; c < n_parts; ++c)
+        {
+          const CGAL::Face_filtered_graph<SoupMesh> ffg(mesh, c, part);
+          settle_part(ffg, members[c], polygons, seen.reversed, report);
+        }
+      for (std::size_t f = 0; f < polygons.size(); ++f)
+        for (unsigned int k = 0; k < 3; ++k)
+          m.triangles[f][k] = static_cast<unsigned int>(polygons[f][k]);
       return report;
     }
   } // namespace tools

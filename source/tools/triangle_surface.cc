@@ -100,21 +100,19 @@ namespace formsolve
         : tree(std::make_unique<Tree>())
         , vertices(mesh.vertices)
     {
-      // Degenerate triangles (no area) carry no normal: left out.
-      double size = 0;
-      for (const auto &v : vertices)
-        size = std::max(size, v.norm());
+      // Triangles without area carry no normal: left out (orient() has
+      // said so for surfaces from files).
       for (const auto &t : mesh.triangles)
         {
           for (const auto v : t)
             AssertThrow(v < vertices.size(),
                         ExcMessage(name + ": a triangle refers to a "
                                           "missing vertex"));
-          const Tensor<1, 3> n =
-            cross_product_3d(vertices[t[1]] - vertices[t[0]],
-                             vertices[t[2]] - vertices[t[0]]);
-          if (n.norm() > 1e-14 * (size * size + 1e-300))
+          if (has_area(mesh, t))
             {
+              const Tensor<1, 3> n =
+                cross_product_3d(vertices[t[1]] - vertices[t[0]],
+                                 vertices[t[2]] - vertices[t[0]]);
               faces.push_back(t);
               face_normal.push_back(n / n.norm());
             }

@@ -42,6 +42,12 @@ namespace formsolve
     SurfaceMesh read_with_gmsh(const std::string &file,
                                const double       facet_size);
 
+    /// Whether triangle @p t of @p mesh has an area to give it a normal:
+    /// |(v1 - v0) x (v2 - v0)| > 1e-12 (|v1 - v0|^2 + |v2 - v0|^2). The one
+    /// test by which tool surfaces leave triangles out.
+    bool has_area(const SurfaceMesh                 &mesh,
+                  const std::array<unsigned int, 3> &t);
+
     /// read_stl or read_with_gmsh by the file's extension; any other
     /// extension is an error naming the file and the accepted ones.
     SurfaceMesh read_surface(const std::string &file, const double facet_size);
