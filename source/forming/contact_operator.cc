@@ -38,6 +38,7 @@ namespace formsolve
     template <int dim>
     void ContactOperator<dim>::begin_solve()
     {
+      sync_nodes();
       state.contact_state.begin_solve();
       strategy.begin_solve();
     }
@@ -54,7 +55,7 @@ namespace formsolve
                        v,
                        dt,
                        state.contact_state,
-                       state.contact_set);
+                       set);
     }
 
     template <int dim>
@@ -65,8 +66,7 @@ namespace formsolve
     {
       TimerOutput::Scope t(timer, "contact");
       find_pairs(v, tool_velocities, dt);
-      state.contact_state.track_status(state.contact_set,
-                                       prm.contact.max_status_flips);
+      state.contact_state.track_status(set, prm.contact.max_status_flips);
     }
 
     template <int dim>
@@ -75,25 +75,47 @@ namespace formsolve
                                        const double dt)
     {
       TimerOutput::Scope t(timer, "contact");
+      sync_nodes();
       // No status tracking: the status of the previous solve is what
       // keep_contact() reads.
       ghost = v;
       find_pairs(ghost, state.tools.velocities(), dt);
       VectorType change(state.owned, state.comm);
-      contact::keep_contact(state.contact_set,
-                            state.contact_state,
-                            state.tools,
-                            dt,
-                            change);
+      contact::keep_contact(set, state.contact_state, state.tools, dt, change);
       change.compress(VectorOperation::add);
       v += change;
       state.constraints.distribute(v);
     }
 
     template <int dim>
+    void ContactOperator<dim>::sync_nodes()
+    {
+      // The nodes and their areas are the state's (set up with the mesh,
+      // areas updated with the configuration once a step).
+      set.nodes = state.contact_set.nodes;
+    }
+
+    template <int dim>
+    void ContactOperator<dim>::accept()
+    {
+      state.contact_set.pairs = set.pairs;
+    }
+
+    template <int dim>
+    std::vector<double> ContactOperator<dim>::accepted_factors() const
+    {
+      const auto &accepted = state.contact_set.pairs;
+      bool        match    = factors_match() && accepted.size() == keys.size();
+      for (unsigned int k = 0; match && k < accepted.size(); ++k)
+        match = keys[k].first == accepted[k].node &&
+                keys[k].second == accepted[k].tool;
+      return match ? epsilon : std::vector<double>(accepted.size(), 0.);
+    }
+
+    template <int dim>
     bool ContactOperator<dim>::factors_match() const
     {
-      const auto &pairs = state.contact_set.pairs;
+      const auto &pairs = set.pairs;
       if (keys.size() != pairs.size() || epsilon.size() != pairs.size())
         return false;
       for (unsigned int k = 0; k < pairs.size(); ++k)
@@ -105,7 +127,7 @@ namespace formsolve
     template <int dim>
     void ContactOperator<dim>::keep_keys()
     {
-      const auto &pairs = state.contact_set.pairs;
+      const auto &pairs = set.pairs;
       AssertDimension(epsilon.size(), pairs.size());
       keys.resize(pairs.size());
       for (unsigned int k = 0; k < pairs.size(); ++k)
@@ -119,12 +141,8 @@ namespace formsolve
       // Collective: decide on all ranks alike.
       const bool same =
         Utilities::MPI::min(int(factors_match()), state.comm) != 0;
-      strategy.at_point(state.contact_set,
-                        state.tools,
-                        system,
-                        state.contact_state,
-                        epsilon,
-                        same);
+      strategy
+        .at_point(set, state.tools, system, state.contact_state, epsilon, same);
       keep_keys();
     }
 
@@ -133,7 +151,7 @@ namespace formsolve
     {
       TimerOutput::Scope t(timer, estimate_section);
       Assert(factors_match(), ExcInternalError());
-      return strategy.at_iterate(state.contact_set,
+      return strategy.at_iterate(set,
                                  state.tools,
                                  system,
                                  state.contact_state,
@@ -143,10 +161,7 @@ namespace formsolve
     template <int dim>
     bool ContactOperator<dim>::tighten()
     {
-      if (!strategy.tighten(state.contact_set,
-                            state.tools,
-                            state.contact_state,
-                            state.comm))
+      if (!strategy.tighten(set, state.tools, state.contact_state, state.comm))
         return false;
       // Estimate again with the new scales at this iterate.
       strategy.begin_solve();
@@ -157,10 +172,7 @@ namespace formsolve
     void ContactOperator<dim>::converged(const contact::SystemView &system)
     {
       TimerOutput::Scope t(timer, estimate_section);
-      strategy.converged(state.contact_set,
-                         state.tools,
-                         system,
-                         state.contact_state);
+      strategy.converged(set, state.tools, system, state.contact_state);
     }
 
     template <int dim>
@@ -170,7 +182,7 @@ namespace formsolve
                                    const bool   newton) const
     {
       TimerOutput::Scope t(timer, "assembly: contact terms");
-      contact::add_contact_terms(state.contact_set,
+      contact::add_contact_terms(set,
                                  factors(),
                                  state.tools,
                                  prm.contact.regularisation_velocity,
@@ -184,7 +196,7 @@ namespace formsolve
     template <int dim>
     bool ContactOperator<dim>::changed()
     {
-      const auto       &pairs = state.contact_set.pairs;
+      const auto       &pairs = set.pairs;
       std::vector<bool> active(pairs.size());
       for (unsigned int k = 0; k < active.size(); ++k)
         active[k] = pairs[k].active || pairs[k].locked;
@@ -202,7 +214,7 @@ namespace formsolve
       // search distance between searches.
       const unsigned int n_tools = state.tools.size();
       std::vector<char>  status(state.contact_state.size(), 0);
-      for (const auto &pair : state.contact_set.pairs)
+      for (const auto &pair : set.pairs)
         status[pair.node * n_tools + pair.tool] = pair.active || pair.locked;
       closed.assign(n_tools, 0);
       opened.assign(n_tools, 0);

@@ -146,7 +146,7 @@ namespace formsolve
           std::vector<double> targets;
           for (const auto &f : state.force_controls)
             targets.push_back(f.target);
-          forces.assemble(state.contact_set,
+          forces.assemble(contact.pairs(),
                           contact.factors(),
                           state.tools,
                           prm.contact.regularisation_velocity,
@@ -251,6 +251,7 @@ namespace formsolve
       point.accepted = true;
       forces.accept(point.tool_speeds);
       forces.move_tools(point.tool_speeds, state.tools);
+      contact.accept();
       body.accept(state.comm, prm.nonlinear.log_iterations);
       Accepted     a;
       const double r       = update_penalty();

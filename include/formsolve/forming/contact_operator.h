@@ -1,9 +1,10 @@
 // Contact of the sheet with the rigid tools as one operator of the step
 // (doc/theory.md, section 6): the pairs at a trial velocity, the penalty
 // factors from the body system, and the contact forces and stiffness added
-// to the system. It works on the state's contact set and
-// contact state, which refinement transfers and checkpoints save, and owns
-// the search, the strategy's factors and what changed between iterates.
+// to the system. It owns the pairs of the point evaluated last (the state's
+// contact set gets those of the accepted iterate), the search, the
+// strategy's factors and what changed between iterates, and works on the
+// state's contact state, which refinement transfers and checkpoints save.
 #pragma once
 
 #include <deal.II/base/timer.h>
@@ -71,13 +72,13 @@ namespace formsolve
       /// (collective); locked pairs (chatter guard) count as active.
       bool changed();
 
-      /// factors(), or zeros if the pairs have none (for output).
-      std::vector<double> factors_or_zero() const
-      {
-        return factors_match()
-                 ? epsilon
-                 : std::vector<double>(state.contact_set.pairs.size(), 0.);
-      }
+      /// Newton accepted the point: its pairs become the state's.
+      void accept();
+      /// One factor per pair of the state's (accepted) pairs; zeros if they
+      /// have none (before the first solve).
+      std::vector<double> accepted_factors() const;
+      /// The pairs of the point evaluated last (nodes: the state's).
+      const contact::ContactSet<dim> &pairs() const { return set; }
       /// One per pair of the last search, in its order.
       const std::vector<double> &factors() const
       {
@@ -94,6 +95,8 @@ namespace formsolve
       bool factors_match() const;
       /// The factors' pairs become the current ones.
       void keep_keys();
+      /// The state's nodes (and areas) into the point's set.
+      void sync_nodes();
       void
       find_pairs(const VectorType                          &v,
                  const std::vector<dealii::Tensor<1, dim>> &tool_velocities,
@@ -106,7 +109,10 @@ namespace formsolve
       contact::PenaltyStrategy<dim> &strategy;
       dealii::TimerOutput           &timer;
       contact::ContactSearch<dim>    search_;
-      std::vector<double>            epsilon;
+      /// The pairs of the point evaluated last; the state holds those of
+      /// the accepted iterate.
+      contact::ContactSet<dim> set;
+      std::vector<double>      epsilon;
       /// (node, tool) of each factor.
       std::vector<std::pair<unsigned int, unsigned int>> keys;
       std::vector<bool>                                  last_active;

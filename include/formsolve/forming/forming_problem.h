@@ -54,11 +54,11 @@ namespace formsolve
       /// after begin_step().
       void predict(VectorType &v);
 
-      /// One factor per pair of the last search (N/mm): 0 where the pairs
-      /// have none yet (before the first solve).
+      /// One factor per pair of the state's contact set, the accepted
+      /// iterate's (N/mm): 0 where the pairs have none yet.
       std::vector<double> penalty_factors() const
       {
-        return contact.factors_or_zero();
+        return contact.accepted_factors();
       }
       /// Velocity of force control j along its direction at the accepted
       /// iterate (mm/s).

@@ -129,9 +129,10 @@ namespace formsolve
       VectorType          velocity_ghost, displacement_ghost; // ghosted
       HistoryStorage<dim> history;
 
-      tools::ToolSet<dim>       tools;
-      contact::ContactSet<dim>  contact_set; // nodes; pairs of the last iterate
-      contact::ContactState     contact_state;
+      tools::ToolSet<dim> tools;
+      contact::ContactSet<dim>
+                            contact_set; // nodes; pairs of the accepted iterate
+      contact::ContactState contact_state;
       std::vector<ForceControl> force_controls;
       HolderState               holder;
 
