@@ -1,10 +1,9 @@
 // The point of a step's Newton solve that was evaluated last: a line-search
-// trial until Newton accepts it, then the iterate. Its contact pairs are the
-// state's contact set (the last search) and its factors the contact
-// operator's, keyed by their pairs. The search sees the tools at the point's
-// speeds; the state's tools and velocity take them only when Newton accepts
-// the point. The one system matrix holds at most this point's tangent,
-// assembled when first asked for.
+// trial until Newton accepts it, then the iterate. Its contact pairs and
+// their factors (keyed by the pairs) are the contact operator's; the search
+// sees the tools at the point's speeds. The state's velocity, tools and
+// contact set take the point's only when Newton accepts it. The one system
+// matrix holds at most this point's tangent, assembled when first asked for.
 #pragma once
 
 #include <deal.II/lac/trilinos_vector.h>
