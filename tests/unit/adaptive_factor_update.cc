@@ -211,9 +211,11 @@ int main(int argc, char **argv)
                     eps[0],
                     step ? record : 300 / delta,
                     1e-6);
-        // Convergence: step reads the system for the next solve's factors.
+        // Convergence: step reads the system for the next solve's factors
+        // (one more read), iteration reads nothing.
+        const unsigned int before = reads;
         adaptive.converged(s.set, tools, s.lazy(400, reads), state);
-        test::close(name + "converged reads", reads, step ? 2 : 2, 0);
+        test::close(name + "converged reads", reads - before, step ? 1 : 0, 0);
       }
   }
   return test::result();
