@@ -263,10 +263,13 @@ namespace formsolve
                          const parameters::Mesh                  &m,
                          parallel::distributed::Triangulation<2> &tria)
       {
-        Assert(g.model == Model::axisymmetric, ExcInternalError());
-        const unsigned int k = initial_mesh_level(m);
-        const double       R = 0.5 * g.blank_diameter;
-        Triangulation<2>   serial;
+        Assert(model::space_dimension(g.model) == 2, ExcInternalError());
+        const bool         axi = g.model == Model::axisymmetric;
+        const unsigned int k   = initial_mesh_level(m);
+        // The section's half length: r from the axis, or x from the plane
+        // of symmetry.
+        const double     R = 0.5 * (axi ? g.blank_diameter : g.blank_length);
+        Triangulation<2> serial;
         GridGenerator::subdivided_hyper_rectangle(serial,
                                                   {2u << (m.refinements - k),
                                                    m.layers >> k},
@@ -276,8 +279,9 @@ namespace formsolve
         for (const auto &cell : serial.active_cell_iterators())
           for (const auto &face : cell->face_iterators())
             if (face->at_boundary())
-              face->set_boundary_id(face->center()[0] < tol ? axis
-                                                            : free_surface);
+              face->set_boundary_id(face->center()[0] >= tol ? free_surface
+                                    : axi                    ? axis
+                                                             : symmetry_x);
         tria.copy_triangulation(serial);
       }
     } // namespace

@@ -45,7 +45,7 @@ namespace formsolve
         current_dV[q] =
           fv.JxW(q) * (kinematics.axisymmetric()
                          ? kinematics.volume_factor(fv.quadrature_point(q))
-                         : 1.);
+                         : kinematics.depth());
       if (reference_fv)
         reference_fv->reinit(cell);
     }
@@ -57,7 +57,7 @@ namespace formsolve
       return reference_fv->JxW(q) *
              (kinematics.axisymmetric()
                 ? kinematics.volume_factor(reference_fv->quadrature_point(q))
-                : 1.);
+                : kinematics.depth());
     }
 
     template <int dim>

@@ -12,10 +12,12 @@ namespace formsolve
     using namespace dealii;
 
     template <int dim>
-    Kinematics<dim>::Kinematics(const bool axisymmetric)
+    Kinematics<dim>::Kinematics(const bool axisymmetric, const double depth)
         : axi(axisymmetric)
+        , width(depth)
     {
       Assert(dim == 2 || !axisymmetric, ExcInternalError());
+      Assert(depth > 0 && (dim == 2 || depth == 1), ExcInternalError());
     }
 
     template <int dim>
@@ -28,7 +30,7 @@ namespace formsolve
     template <int dim>
     double Kinematics<dim>::volume_factor(const Point<dim> &x) const
     {
-      return axi ? 2. * M_PI * x[0] : 1.;
+      return axi ? 2. * M_PI * x[0] : width;
     }
 
     template <int dim>

@@ -20,22 +20,17 @@ namespace formsolve
     template <int dim>
     MaterialFrame<dim>::MaterialFrame(const double rolling_direction)
     {
-      if (dim == 3)
-        {
-          const double c = std::cos(rolling_direction),
-                       s = std::sin(rolling_direction);
-          start[0][0]    = c; // RD
-          start[1][0]    = s;
-          start[0][1]    = -s; // TD
-          start[1][1]    = c;
-          start[2][2]    = 1; // ND
-        }
-      else
-        {
-          start[0][0] = 1; // RD radial
-          start[2][1] = 1; // TD hoop
-          start[1][2] = 1; // ND axial
-        }
+      // The sheet plane is (x, y): axes 0, 1 in 3-D; in a 2-D section,
+      // axis 0 and the third axis of the 3x3 frame (y in plane strain, the
+      // hoop direction in axisymmetry), and ND is axis 1 (z).
+      const unsigned int y = dim == 3 ? 1 : 2, z = dim == 3 ? 2 : 1;
+      const double       c = std::cos(rolling_direction),
+                   s       = std::sin(rolling_direction);
+      start[0][0]          = c; // RD
+      start[y][0]          = s;
+      start[0][1]          = -s; // TD
+      start[y][1]          = c;
+      start[z][2]          = 1; // ND
     }
 
     template <int dim>

@@ -8,13 +8,15 @@ namespace formsolve
   {
     std::string model_names()
     {
-      return "axisymmetric|half|quarter|full";
+      return "axisymmetric|plane strain|half|quarter|full";
     }
 
     Model parse_model(const std::string &n)
     {
       if (n == "axisymmetric")
         return Model::axisymmetric;
+      if (n == "plane strain")
+        return Model::plane_strain;
       if (n == "half")
         return Model::half;
       if (n == "quarter")
@@ -31,6 +33,8 @@ namespace formsolve
         {
           case Model::axisymmetric:
             return "axisymmetric";
+          case Model::plane_strain:
+            return "plane strain";
           case Model::half:
             return "half";
           case Model::quarter:
@@ -41,19 +45,31 @@ namespace formsolve
       return "";
     }
 
+    std::vector<std::string> coordinate_names(const Model m)
+    {
+      if (m == Model::axisymmetric)
+        return {"r", "z"};
+      if (m == Model::plane_strain)
+        return {"x", "z"};
+      return {"x", "y", "z"};
+    }
+
     unsigned int space_dimension(const Model m)
     {
-      return m == Model::axisymmetric ? 2 : 3;
+      return m == Model::axisymmetric || m == Model::plane_strain ? 2 : 3;
     }
 
     double symmetry_factor(const Model m)
     {
-      return m == Model::quarter ? 4. : m == Model::half ? 2. : 1.;
+      return m == Model::quarter                            ? 4.
+             : m == Model::half || m == Model::plane_strain ? 2.
+                                                            : 1.;
     }
 
     bool symmetric_in_x(const Model m)
     {
-      return m == Model::half || m == Model::quarter;
+      return m == Model::half || m == Model::quarter ||
+             m == Model::plane_strain;
     }
 
     bool symmetric_in_y(const Model m)

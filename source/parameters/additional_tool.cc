@@ -76,7 +76,7 @@ namespace formsolve
     }
 
 
-    void AdditionalTool::validate(const bool axisymmetric,
+    void AdditionalTool::validate(const bool section,
                                   const bool symmetric_x,
                                   const bool symmetric_y) const
     {
@@ -92,9 +92,10 @@ namespace formsolve
       require(std::isfinite(length) && length > 0,
               e + "Direction",
               "must not be zero");
-      require(!axisymmetric || (direction[0] == 0 && direction[1] == 0),
+      require(!section || (direction[0] == 0 && direction[1] == 0),
               e + "Direction",
-              "must lie along z for Geometry/Model = axisymmetric");
+              "must lie along z for a 2-D Geometry/Model (axisymmetric, "
+              "plane strain)");
       require((!symmetric_x || direction[0] == 0) &&
                 (!symmetric_y || direction[1] == 0),
               e + "Direction",

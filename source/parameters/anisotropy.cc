@@ -103,7 +103,10 @@ namespace formsolve
             rolling_direction,
             number("degrees", -360, 360),
             "Angle of the rolling direction from the x axis in "
-            "the sheet plane (degrees), 3-D models.");
+            "the sheet plane (degrees): 3-D models and plane strain (0: RD "
+            "across the tools, along the section; 90: the section along TD); "
+            "the axisymmetric model takes normal anisotropy only, where it "
+            "has no effect.");
       d.add("Fracture constants normalisation",
             damage_normalisation,
             normalisation_names,

@@ -24,6 +24,10 @@ namespace formsolve
         "Which part of the scene is modelled. axisymmetric: the r-z section "
         "of a round blank under round tools (2-D, the z axis is the axis of "
         "revolution; the cheapest faithful model of a cylindrical cup); "
+        "plane strain: the x-z section x >= 0 of a long part (channel, rail, "
+        "bend) with the symmetry plane x = 0 and no strain along y, for a "
+        "rectangular blank whose Blank width is the part's length along y "
+        "(2-D; round tools are straight along y with their profile in x-z); "
         "quarter: x >= 0, y >= 0 with symmetry planes x = 0 and y = 0; half: "
         "x >= 0 with the symmetry plane x = 0; full: the whole sheet. Forces "
         "are always reported for the full part.",
@@ -43,11 +47,13 @@ namespace formsolve
       d.add("Blank length",
             blank_length,
             number("mm", 0),
-            "Full length of a rectangular blank along x (mm).");
+            "Full length of a rectangular blank along x (mm); plane strain: "
+            "the section's length across the tools.");
       d.add("Blank width",
             blank_width,
             number("mm", 0),
-            "Full width of a rectangular blank along y (mm).");
+            "Full width of a rectangular blank along y (mm); plane strain: "
+            "the width the section stands for (forces are for it).");
       d.add("Thickness",
             thickness,
             number("mm"),
@@ -81,6 +87,11 @@ namespace formsolve
         require(blank_shape == BlankShape::round,
                 "Geometry/Blank shape",
                 "must be round for Model = axisymmetric");
+      if (model == model::Model::plane_strain)
+        require(blank_shape == BlankShape::rectangle,
+                "Geometry/Blank shape",
+                "must be rectangle for Model = plane strain (Blank length "
+                "across the tools, Blank width along them)");
     }
 
     void Mesh::declare(Declarations &d)

@@ -86,7 +86,7 @@ namespace formsolve
       /// Cells of the initial mesh, before it is built (0: unknown, gmsh).
       double initial_cells(const Geometry &g, const Mesh &m)
       {
-        if (g.model == model::Model::axisymmetric)
+        if (model::space_dimension(g.model) == 2)
           return std::ldexp(2., m.refinements) * m.layers;
         double coarse = 0;
         if (g.blank_shape == BlankShape::round)
@@ -143,9 +143,9 @@ namespace formsolve
       /// Every tool's shape and placement against the model.
       void check_tool_shapes(const Run &run)
       {
-        const bool axi = run.geometry.model == model::Model::axisymmetric;
+        const bool section = model::space_dimension(run.geometry.model) == 2;
         for (const auto &t : run.tools.additional)
-          t.validate(axi,
+          t.validate(section,
                      model::symmetric_in_x(run.geometry.model),
                      model::symmetric_in_y(run.geometry.model));
         std::vector<const Tool *> all = {&run.tools.punch,
@@ -155,16 +155,16 @@ namespace formsolve
           all.push_back(&t);
         for (const Tool *t : all)
           {
-            require(!axi || !t->enabled ||
+            require(!section || !t->enabled ||
                       t->shape != ToolShape::rounded_rectangle,
                     "Tools/" + t->name + "/Shape",
-                    "must be round, flat or mesh (an r-z profile) for "
-                    "Geometry/Model = axisymmetric");
-            require(!axi || !t->enabled || t->shape != ToolShape::mesh ||
+                    "must be round, flat or mesh (a profile in the section) "
+                    "for a 2-D Geometry/Model (axisymmetric, plane strain)");
+            require(!section || !t->enabled || t->shape != ToolShape::mesh ||
                       (t->mesh_offset[0] == 0 && t->mesh_offset[1] == 0),
                     "Tools/" + t->name + "/Mesh offset",
-                    "the axisymmetric model moves a profile along z only "
-                    "(give 0, 0, z)");
+                    "a 2-D model (axisymmetric, plane strain) moves a profile "
+                    "along z only (give 0, 0, z)");
           }
       }
 
@@ -172,6 +172,15 @@ namespace formsolve
       void check_outlines(const Run &run)
       {
         const Tools &tools = run.tools;
+        if (tools.die.enabled && tools.die.shape == ToolShape::round &&
+            run.geometry.model == model::Model::plane_strain)
+          require(run.geometry.blank_length > tools.die.diameter,
+                  "Geometry/Blank length",
+                  "(" + str(run.geometry.blank_length) +
+                    " mm) must exceed Tools/Die/Diameter (" +
+                    str(tools.die.diameter) +
+                    " mm, the die opening across the section), or the strip "
+                    "falls through the die");
         if (tools.die.enabled && tools.die.shape == ToolShape::round &&
             run.geometry.blank_shape == BlankShape::round)
           require(run.geometry.blank_diameter > tools.die.diameter,

@@ -12,14 +12,6 @@ namespace formsolve
 
     namespace
     {
-      /// Names of the coordinates of a location: (r, z) or (x, y, z).
-      template <int dim>
-      std::vector<std::string> coordinates()
-      {
-        return dim == 2 ? std::vector<std::string>{"r", "z"}
-                        : std::vector<std::string>{"x", "y", "z"};
-      }
-
       /// Suffixes of the draw-in directions.
       template <int dim>
       std::vector<std::string> directions()
@@ -40,7 +32,8 @@ namespace formsolve
 
       /// history.csv: the process as the forming engineer reads it.
       template <int dim>
-      std::vector<std::string> columns(const tools::ToolSet<dim> &tools)
+      std::vector<std::string> columns(const tools::ToolSet<dim> &tools,
+                                       const model::Model         m)
       {
         std::vector<std::string> c = {"step",
                                       "time",
@@ -58,7 +51,7 @@ namespace formsolve
           c.insert(c.end(),
                    {"position_" + tools.key(t), "force_along_" + tools.key(t)});
         c.push_back("max_equivalent_strain");
-        const auto where = coordinates<dim>();
+        const auto where = model::coordinate_names(m);
         c.insert(c.end(),
                  {"min_thickness",
                   "min_thickness_R0",
@@ -127,7 +120,7 @@ namespace formsolve
     HistoryWriter<dim>::HistoryWriter(const state::State<dim> &state,
                                       const int                keep_rows)
         : table(state.prm.output.directory + "/history.csv",
-                columns(state.tools),
+                columns(state.tools, state.prm.geometry.model),
                 Utilities::MPI::this_mpi_process(state.comm) == 0,
                 keep_rows)
         , solver_table(state.prm.output.directory + "/solver.csv",
@@ -246,7 +239,7 @@ namespace formsolve
       table.set("max_equivalent_strain",
                 maximum(state, &state::QuadraturePointHistory::strain).value);
       const auto &sheet = forming.sheet;
-      const auto  where = coordinates<dim>();
+      const auto  where = model::coordinate_names(state.prm.geometry.model);
       table.set("min_thickness", sheet.min_thickness);
       table.set("min_thickness_R0", sheet.min_thickness_radius);
       table.set("max_thinning_percent", sheet.max_thinning);

@@ -150,15 +150,19 @@ namespace formsolve
           Tensor<1, dim> normal;
           if constexpr (dim == 2)
             {
-              // Meridional stretch along the section, hoop stretch r/R.
+              // Stretch along the section; across it r/R (hoop) in
+              // axisymmetry, 1 in plane strain.
               const double R0 = cell->vertex(0)[0], R1 = cell->vertex(1)[0];
               const Tensor<1, 2> t  = m[1] - m[0];
               const double       ls = t.norm() / std::abs(R1 - R0);
-              const double lh = 0.5 * (m[0][0] + m[1][0]) / (0.5 * (R0 + R1));
-              major           = std::log(std::max(ls, lh));
-              minor           = std::log(std::min(ls, lh));
-              normal[0]       = -t[1] / t.norm();
-              normal[1]       = t[0] / t.norm();
+              const double       lh =
+                state.kinematics.axisymmetric()
+                        ? 0.5 * (m[0][0] + m[1][0]) / (0.5 * (R0 + R1))
+                        : 1.;
+              major     = std::log(std::max(ls, lh));
+              minor     = std::log(std::min(ls, lh));
+              normal[0] = -t[1] / t.norm();
+              normal[1] = t[0] / t.norm();
             }
           else
             {

@@ -29,21 +29,21 @@ namespace formsolve
     }
 
     template <int dim>
-    std::string SplitEvent<dim>::where() const
+    std::string SplitEvent<dim>::where(const model::Model m) const
     {
+      const auto         names = model::coordinate_names(m);
       std::ostringstream now;
       now.precision(4);
-      now << (dim == 2 ? "r = " : "x = ") << location[0]
-          << (dim == 2 ? ", z = " : ", y = ") << location[1];
-      if (dim == 3)
-        now << ", z = " << location[dim - 1];
+      for (unsigned int d = 0; d < dim; ++d)
+        now << (d > 0 ? ", " : "") << names[d] << " = " << location[d];
       now << " mm";
       // A point whose reference position is not known: where it is now.
       if (std::isnan(reference_radius))
         return now.str();
       std::ostringstream s;
       s.precision(4);
-      s << "R0 = " << reference_radius << " mm";
+      s << (m == model::Model::plane_strain ? "X0 = " : "R0 = ")
+        << reference_radius << " mm";
       if (dim == 3)
         s << ", " << reference_angle << " degrees from x";
       s << " (now " << now.str() << ")";

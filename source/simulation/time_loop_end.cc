@@ -176,7 +176,8 @@ namespace formsolve
             continue; // check_fracture has said it
           std::ostringstream s;
           s << (first ? "split: " : "note: ") << what<dim>(m, e, prm.material)
-            << " at punch travel " << mm(e.travel) << ", at " << e.where();
+            << " at punch travel " << mm(e.travel) << ", at "
+            << e.where(prm.geometry.model);
           if (!split.marks_split(m))
             s << " (not a split by Split/Measures)";
           if (first)
@@ -198,8 +199,9 @@ namespace formsolve
       std::ostringstream s;
       s << "the sheet split: "
         << what<dim>(split.split_measure(), e, prm.material)
-        << " at punch travel " << mm(e.travel) << ", at " << e.where()
-        << "; stopped " << mm(state.tools.punch_travel() - e.travel)
+        << " at punch travel " << mm(e.travel) << ", at "
+        << e.where(prm.geometry.model) << "; stopped "
+        << mm(state.tools.punch_travel() - e.travel)
         << " past it (Split/After a split = stop)";
       return s.str();
     }
@@ -216,7 +218,7 @@ namespace formsolve
             << mm(state.tools.punch_travel() - e.travel)
             << " of punch travel after the sheet split ("
             << what<dim>(split.split_measure(), e, prm.material) << " at "
-            << mm(e.travel) << ", at " << e.where()
+            << mm(e.travel) << ", at " << e.where(prm.geometry.model)
             << "), which is the likely cause: ";
         }
       s << "step " << state.step + 1 << " (punch travel "
@@ -283,7 +285,7 @@ namespace formsolve
                                 split.first(),
                                 prm.material) +
                       " at punch travel " + mm(split.first().travel) + ", at " +
-                      split.first().where()
+                      split.first().where(prm.geometry.model)
                   : std::string("no split"))
             << "\n";
       if (damage.criterion() != parameters::FractureCriterion::none)

@@ -45,13 +45,12 @@ namespace formsolve
       }
 
       template <int dim>
-      std::string where(const Point<dim> &x)
+      std::string where(const Point<dim> &x, const model::Model m)
       {
+        const auto         names = model::coordinate_names(m);
         std::ostringstream s;
-        s << (dim == 2 ? "r = " : "x = ") << x[0]
-          << (dim == 2 ? ", z = " : ", y = ") << x[1];
-        if (dim == 3)
-          s << ", z = " << x[dim - 1];
+        for (unsigned int d = 0; d < dim; ++d)
+          s << (d > 0 ? ", " : "") << names[d] << " = " << x[d];
         s << " mm";
         return s.str();
       }
@@ -122,7 +121,7 @@ namespace formsolve
               pcout << (deciding ? "fracture predicted: " : "note: ")
                     << criterion_name(criterion) << " reaches 1 by " << name
                     << " at punch travel " << w->stroke << " mm, at "
-                    << where(location)
+                    << where(location, prm.geometry.model)
                     << (deciding ? "" : " (not the deciding measure)")
                     << std::endl;
               if (deciding)
@@ -162,6 +161,7 @@ namespace formsolve
       // Machine-readable totals for benchmarks and the report.
       std::ostringstream f;
       f << "model = " << model::name(prm.geometry.model)
+        << "\nsection_width = " << prm.geometry.section_depth()
         << "\nranks = " << Utilities::MPI::n_mpi_processes(comm)
         << "\ndofs = " << summary.n_dofs
         << "\nmean_dofs = " << summary.dof_steps / std::max(1u, summary.steps)
@@ -264,13 +264,14 @@ namespace formsolve
         << "\nsplit_measure = "
         << (split_ ? postprocess::split_measure_name(split.split_measure())
                    : std::string("none"))
-        << "\nsplit_location = " << (split_ ? e.where() : std::string());
+        << "\nsplit_location = "
+        << (split_ ? e.where(prm.geometry.model) : std::string());
       // The same as numbers: the column's planform position (R0, angle from
       // x) and its current mid-surface point (NaN: not known / no split).
       const double nan = std::numeric_limits<double>::quiet_NaN();
       f << "\nsplit_R0 = " << (split_ ? e.reference_radius : nan)
         << "\nsplit_angle = " << (split_ ? e.reference_angle : nan);
-      const char *names[] = {dim == 2 ? "r" : "x", dim == 2 ? "z" : "y", "z"};
+      const auto names = model::coordinate_names(prm.geometry.model);
       for (unsigned int d = 0; d < dim; ++d)
         f << "\nsplit_" << names[d] << " = " << (split_ ? e.location[d] : nan);
       for (const auto m : {postprocess::SplitMeasure::forming_limit,
@@ -282,7 +283,8 @@ namespace formsolve
           const auto &ev = split.event(m);
           f << "\n"
             << key << "_travel = " << ev.travel << "\n"
-            << key << "_location = " << (ev.met() ? ev.where() : std::string());
+            << key << "_location = "
+            << (ev.met() ? ev.where(prm.geometry.model) : std::string());
         }
       f << "\nsplit_measures ="
         << (prm.split.by_forming_limit ? " forming_limit" : "")

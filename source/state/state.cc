@@ -20,7 +20,8 @@ namespace formsolve
     State<dim>::State(const parameters::Run &run, const MPI_Comm comm)
         : prm(run)
         , comm(comm)
-        , kinematics(run.geometry.model == model::Model::axisymmetric)
+        , kinematics(run.geometry.model == model::Model::axisymmetric,
+                     run.geometry.section_depth())
         , tria(comm)
         , fe(FE_Q<dim>(run.mesh.degree), dim)
         , dof_handler(tria)

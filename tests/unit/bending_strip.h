@@ -34,7 +34,7 @@ namespace test
     return prm;
   }
 
-  class BendingStrip : public StateProblem
+  class BendingStrip : public StateProblem<>
   {
   public:
     BendingStrip(const StripSize            &size,
@@ -57,7 +57,7 @@ namespace test
     /// Newton from the end rotation alone.
     void solve_flow() { solve_velocity(1e-9); }
 
-    using StateProblem::state;
+    using StateProblem<>::state;
     const StripSize                   size;
     const parameters::Run             prm;
     const material::RigidViscoplastic material;

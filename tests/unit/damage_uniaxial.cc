@@ -24,7 +24,7 @@ namespace
 {
   const double h = 2, V = 0.2, dt = 0.25; // height (mm), end speed (mm/s)
 
-  class Tension : public test::StateProblem
+  class Tension : public test::StateProblem<>
   {
   public:
     Tension(state::State<3>               &state,

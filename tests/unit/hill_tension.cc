@@ -32,7 +32,6 @@
 #include "state_problem.h"
 
 #include <cmath>
-#include <set>
 
 using namespace dealii;
 using namespace formsolve;
@@ -41,7 +40,7 @@ namespace
 {
   const double L = 4, W = 2, T = 1, V = 0.04, dt = 0.5; // mm, mm/s, s
 
-  class Tension : public test::StateProblem
+  class Tension : public test::StateProblem<>
   {
   public:
     Tension(state::State<3>            &state,
@@ -103,40 +102,8 @@ namespace
     /// The x force on the end x = L/2: the unconstrained residual there.
     double end_force() const
     {
-      AffineConstraints<double> none;
-      none.reinit(state.relevant);
-      none.merge(state.constraints);
-      none.close();
-      solver::VectorType r(state.owned, state.comm);
-      assembler.assemble_body(state.dof_handler,
-                              *state.mapping,
-                              none,
-                              state.velocity_ghost,
-                              state.history,
-                              dt,
-                              false,
-                              nullptr,
-                              r);
-      std::map<types::global_dof_index, Point<3>> points;
-      DoFTools::map_dofs_to_support_points(state.reference_mapping,
-                                           state.dof_handler,
-                                           points);
-      std::set<types::global_dof_index>    end;
-      std::vector<types::global_dof_index> dofs(state.fe.n_dofs_per_cell());
-      for (const auto &cell : state.dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            cell->get_dof_indices(dofs);
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              if (state.fe.system_to_component_index(i).first == 0 &&
-                  state.owned.is_element(dofs[i]) &&
-                  std::abs(points[dofs[i]][0] - L / 2) < 1e-9)
-                end.insert(dofs[i]);
-          }
-      double force = 0;
-      for (const auto i : end)
-        force += r[i];
-      return Utilities::MPI::sum(force, state.comm);
+      return x_force(
+        [](const Point<3> &p) { return std::abs(p[0] - L / 2) < 1e-9; });
     }
   };
 
@@ -167,29 +134,12 @@ namespace
     tension.solve_flow();
     const double force = tension.end_force();
 
-    // Rate and flow stress at the first point of a cell of this rank.
-    double rate[3] = {0, 0, 0}, flow = 0;
-    for (const auto &cell : state.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const QGauss<3>                    rule(2);
-          model::CellKinematics<3>           k(state.kinematics,
-                                     *state.mapping,
-                                     state.fe,
-                                     rule,
-                                     update_jacobians,
-                                     &state.reference_mapping);
-          material::HillOrientation<3>       o(material);
-          std::vector<SymmetricTensor<2, 3>> D;
-          k.reinit(cell);
-          o.reinit(k);
-          k.rates(state.velocity_ghost, D);
-          // The plastic rates: without the penalty's small volume rate.
-          for (unsigned int d = 0; d < 3; ++d)
-            rate[d] = deviator(D[0])[d][d];
-          flow = material.evaluate(D[0], 0, dt, false, o.map(0)).flow_stress;
-          break;
-        }
+    // Rate and flow stress at the first point of a cell of this rank; the
+    // plastic rates without the penalty's small volume rate.
+    const auto [D, flow] = test::first_point(state, material, dt);
+    double rate[3];
+    for (unsigned int d = 0; d < 3; ++d)
+      rate[d] = deviator(D)[d][d];
     const double area = W * T; // the step is solved on the initial block
     state.advance(dt, update);
     const double oyane = Utilities::MPI::max(

@@ -5,12 +5,15 @@
 // state.velocity_ghost.
 #pragma once
 
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <formsolve/forming/assembler.h>
 #include <formsolve/linear/mumps_solver.h>
+#include <formsolve/material/hill_orientation.h>
+#include <formsolve/model/cell_kinematics.h>
 #include <formsolve/newton/newton_solver.h>
 #include <formsolve/parameters/parameters.h>
 #include <formsolve/state/state.h>
@@ -18,16 +21,50 @@
 #include "check.h"
 #include "toy_problem.h"
 
+#include <map>
+#include <set>
+
 namespace test
 {
+  /// The rate of deformation and the flow stress at the first quadrature
+  /// point of this rank's first cell (for a homogeneous flow: any point's).
+  template <int dim>
+  std::pair<dealii::SymmetricTensor<2, 3>, double>
+  first_point(const formsolve::state::State<dim>           &state,
+              const formsolve::material::RigidViscoplastic &material,
+              const double                                  dt)
+  {
+    using namespace formsolve;
+    for (const auto &cell : state.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const dealii::QGauss<dim>                  rule(2);
+          model::CellKinematics<dim>                 k(state.kinematics,
+                                       *state.mapping,
+                                       state.fe,
+                                       rule,
+                                       dealii::update_jacobians,
+                                       &state.reference_mapping);
+          material::HillOrientation<dim>             o(material);
+          std::vector<dealii::SymmetricTensor<2, 3>> D;
+          k.reinit(cell);
+          o.reinit(k);
+          k.rates(state.velocity_ghost, D);
+          return {D[0],
+                  material.evaluate(D[0], 0, dt, false, o.map(0)).flow_stress};
+        }
+    return {dealii::SymmetricTensor<2, 3>(), 0.};
+  }
+
+  template <int dim = 3>
   class StateProblem : public ToyProblem
   {
   public:
     /// Stores the references only: @p state may be built after this base.
-    StateProblem(formsolve::state::State<3>            &state,
-                 const formsolve::solver::Assembler<3> &assembler,
-                 const double                           time_step,
-                 const bool                             symmetric)
+    StateProblem(formsolve::state::State<dim>            &state,
+                 const formsolve::solver::Assembler<dim> &assembler,
+                 const double                             time_step,
+                 const bool                               symmetric)
         : state(state)
         , assembler(assembler)
         , time_step(time_step)
@@ -78,6 +115,56 @@ namespace test
       return its;
     }
 
+    /// The residual without the test's constraints (the State's symmetry
+    /// and hanging-node lines only) at the current velocity: at a converged
+    /// flow, the forces on the prescribed DoFs.
+    formsolve::solver::VectorType unconstrained_residual() const
+    {
+      dealii::AffineConstraints<double> none;
+      none.reinit(state.relevant);
+      none.merge(state.constraints);
+      none.close();
+      formsolve::solver::VectorType r(state.owned, state.comm);
+      assembler.assemble_body(state.dof_handler,
+                              *state.mapping,
+                              none,
+                              state.velocity_ghost,
+                              state.history,
+                              time_step,
+                              false,
+                              nullptr,
+                              r);
+      return r;
+    }
+
+    /// The sum of the unconstrained residual's component-0 entries at the
+    /// owned DoFs whose support point is @p at (the x force on a face).
+    template <class Where>
+    double x_force(const Where &at) const
+    {
+      const auto r = unconstrained_residual();
+      std::map<dealii::types::global_dof_index, dealii::Point<dim>> points;
+      dealii::DoFTools::map_dofs_to_support_points(state.reference_mapping,
+                                                   state.dof_handler,
+                                                   points);
+      std::set<dealii::types::global_dof_index>    face;
+      std::vector<dealii::types::global_dof_index> dofs(
+        state.fe.n_dofs_per_cell());
+      for (const auto &cell : state.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (state.fe.system_to_component_index(i).first == 0 &&
+                  state.owned.is_element(dofs[i]) && at(points[dofs[i]]))
+                face.insert(dofs[i]);
+          }
+      double force = 0;
+      for (const auto i : face)
+        force += r[i];
+      return dealii::Utilities::MPI::sum(force, state.comm);
+    }
+
   protected:
     /// The matrix and residual for the closed constraints.
     void setup_system()
@@ -95,10 +182,10 @@ namespace test
       residual.reinit(state.owned, state.comm);
     }
 
-    formsolve::state::State<3>            &state;
-    const formsolve::solver::Assembler<3> &assembler;
-    const double                           time_step; // s, of the assembly
-    dealii::AffineConstraints<double>      bc, homogeneous;
+    formsolve::state::State<dim>            &state;
+    const formsolve::solver::Assembler<dim> &assembler;
+    const double                             time_step; // s, of the assembly
+    dealii::AffineConstraints<double>        bc, homogeneous;
 
   private:
     formsolve::solver::MatrixType  matrix;

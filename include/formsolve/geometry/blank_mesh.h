@@ -21,7 +21,7 @@ namespace formsolve
     enum BoundaryId : dealii::types::boundary_id
     {
       free_surface = 0, // candidate for contact
-      symmetry_x   = 1, // plane x = 0 (3-D half and quarter models)
+      symmetry_x   = 1, // plane x = 0 (half, quarter and plane strain)
       symmetry_y   = 2, // plane y = 0 (3-D quarter model)
       axis         = 3  // r = 0 (axisymmetric model): v_r = 0
     };

@@ -1,6 +1,7 @@
 // The one owner of the kinematics: the 3x3 rate of deformation (with the hoop
-// rate v_r/r in axisymmetry), the strain of a shape function (its
-// linearisation) and the volume element (2 pi r JxW in axisymmetry). Material
+// rate v_r/r in axisymmetry, no strain along y in plane strain), the strain of
+// a shape function (its linearisation) and the volume element (2 pi r JxW in
+// axisymmetry, b JxW for the width b of a plane-strain section). Material
 // laws only ever see 3x3 tensors; assembly, history, integrals, contact areas
 // and output all go through this class (doc/theory.md, section 1).
 #pragma once
@@ -52,16 +53,22 @@ namespace formsolve
     class Kinematics
     {
     public:
-      /// dim = 2: axisymmetric (r = x_0, z = x_1) or, if false, plane strain.
-      /// dim = 3: Cartesian; @p axisymmetric must be false.
-      explicit Kinematics(const bool axisymmetric);
+      /// dim = 2: axisymmetric (r = x_0, z = x_1) or, if false, plane strain
+      /// (x = x_0, z = x_1, the 3x3 frame's third axis is y) over the width
+      /// @p depth along y (mm). dim = 3: Cartesian; @p axisymmetric must be
+      /// false and @p depth 1.
+      explicit Kinematics(const bool axisymmetric, const double depth = 1.);
 
       bool axisymmetric() const { return axi; }
+
+      /// The width a plane-strain section stands for (1 in 3-D).
+      double depth() const { return width; }
 
       /// What FEValues must compute besides gradients and JxW.
       dealii::UpdateFlags update_flags() const;
 
-      /// 2 pi r in axisymmetry (the full ring), else 1: dV = factor JxW.
+      /// 2 pi r in axisymmetry (the full ring), the width in plane strain,
+      /// else 1: dV = factor JxW.
       double volume_factor(const Point<dim> &x) const;
 
       /// D = sym grad v in 3x3, with D_thth = v_r / r in axisymmetry.
@@ -80,7 +87,8 @@ namespace formsolve
       static Tensor<1, 3> embed(const Tensor<1, dim> &a);
 
     private:
-      bool axi;
+      bool   axi;
+      double width;
     };
   } // namespace model
 } // namespace formsolve

@@ -23,9 +23,10 @@ namespace formsolve
     class MaterialFrame
     {
     public:
-      /// @p rolling_direction: angle of RD from the x axis (radians), 3-D.
-      /// In axisymmetry ((r, z, theta)) RD is radial, TD the hoop and ND the
-      /// axial direction of the flat blank.
+      /// @p rolling_direction: angle of RD from the x axis towards y
+      /// (radians). In a 2-D section ((x, z, y) in plane strain, (r, z,
+      /// theta) in axisymmetry, where only normal anisotropy is allowed and
+      /// the angle is 0) ND is the axial direction of the flat blank.
       explicit MaterialFrame(const double rolling_direction);
 
       /// Columns RD, TD, ND now, for the deformation gradient @p F from the

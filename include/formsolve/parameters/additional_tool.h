@@ -36,7 +36,7 @@ namespace formsolve
       void declare(Declarations &d);
       /// @p axisymmetric, @p symmetric_x/y: the model's symmetries, which a
       /// direction must keep.
-      void validate(const bool axisymmetric,
+      void validate(const bool section,
                     const bool symmetric_x,
                     const bool symmetric_y) const;
     };

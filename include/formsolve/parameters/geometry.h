@@ -36,6 +36,13 @@ namespace formsolve
 
       /// Factor from the modelled part to the full part (4 for a quarter).
       double symmetry_factor() const { return model::symmetry_factor(model); }
+
+      /// The width along y a plane-strain section stands for (mm; the blank
+      /// width), 1 for the other models.
+      double section_depth() const
+      {
+        return model == model::Model::plane_strain ? blank_width : 1.;
+      }
     };
 
     /// Subsection "Mesh".

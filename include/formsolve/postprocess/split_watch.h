@@ -8,6 +8,7 @@
 
 #include <deal.II/base/point.h>
 
+#include <formsolve/model/model.h>
 #include <formsolve/parameters/split.h>
 #include <formsolve/postprocess/sheet_measures.h>
 
@@ -42,8 +43,8 @@ namespace formsolve
 
       bool met() const { return travel >= 0; }
       /// "R0 = 20.5 mm (now r = 21.3, z = -19.8 mm)", with the angle from x
-      /// in 3-D.
-      std::string where() const;
+      /// in 3-D, "X0 = ... (now x = ..., z = ...)" in plane strain.
+      std::string where(const model::Model m) const;
     };
 
     template <int dim>
