@@ -91,6 +91,8 @@ def rendered(run, args, split, rendering, section):
                              (", the tools faint" if run.tools and not args.no_tools else "") +
                              (". Axisymmetric: revolved with a quarter left open, its cut faces show the "
                               "section" if run.axisymmetric else "") +
+                             (". Plane strain: the section mirrored at x = 0 and swept over the width it "
+                              "stands for; its end faces show the section" if run.plane_strain else "") +
                              (". The black ball marks the split column."
                               if split and split["R0"] is not None else ".")))
     section.checks.append(("Contact penetration", "penetration.png", "Contact penetration in micrometres (a "
@@ -123,7 +125,7 @@ def damage_plots(run, split, section, plt):
 
 def rim_plots(run, section, plt):
     """3-D: earing once drawn through, else the flange's draw-in."""
-    if not run.axisymmetric and run.sheet:
+    if not run.section and run.sheet:
         made = attempt(section.notes, "earing/draw-in plot", lambda: rim_plot(run, section.report, plt))
         timing.lap("report", "earing/draw-in plot")
         if made:

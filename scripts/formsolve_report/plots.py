@@ -87,7 +87,7 @@ def sections(sheet, model):
             prev = p
             pts.append((s, c["thickness"], c))
         return pts
-    if model == "axisymmetric":
+    if model in ("axisymmetric", "plane strain"):
         return [("section", along(sheet))]
     out = []
     for phi in (0.0, 45.0, 90.0):

@@ -15,7 +15,7 @@ from . import timing
 from .mesh import add_penetration, merged
 from .window import PartWindow
 from .rundata import Run
-from .scene import FIELDS, mirrored_scene, revolved_scene
+from .scene import FIELDS, extruded_scene, mirrored_scene, revolved_scene
 from .split import split_event
 from .vtu import read_vtu
 
@@ -82,12 +82,13 @@ def render_pictures(args, report):
         tools = read_vtu(os.path.join(run.directory, run.tools), ())
     split = split_event(run)
     scene = (revolved_scene(run, grid, tools, split, vtk) if run.axisymmetric
+             else extruded_scene(run, grid, tools, split, vtk) if run.plane_strain
              else mirrored_scene(run, grid, tools, split, args.view, vtk))
     timing.lap("render", "read the VTU output, make the scene")
     caption = [f"punch travel {run.vtu_travel:.2f} mm (step {run.vtu_step}); view: {args.view}"]
     if scene["marker"]:
         caption.append(f"black ball: the split column ({split['measure']} at {split['travel']:.2f} mm)")
-    window = PartWindow(scene, caption, args.view, run.axisymmetric, vtk)
+    window = PartWindow(scene, caption, args.view, run.section, vtk)
     for field, title, name, fixed in (
             ("thinning_percent", "thickness change (%)\nthinning +\nthickening −", "thickness-change.png", args.range),
             ("penetration_um", "contact\npenetration\n(micrometres)", "penetration.png", None)):

@@ -23,6 +23,8 @@ class Run:
         self.summary = read_summary(os.path.join(d, "run-summary.txt"))
         self.model = self.summary.get("model", "")
         self.axisymmetric = self.model == "axisymmetric"
+        self.plane_strain = self.model == "plane strain"
+        self.section = self.axisymmetric or self.plane_strain  # a 2-D model
         history = read_csv(os.path.join(d, "history.csv"))
         solver_csv = os.path.join(d, "solver.csv")
         solver = read_csv(solver_csv) if os.path.exists(solver_csv) else []
@@ -116,7 +118,7 @@ class Run:
         if self.vtu is None:
             return [], f"no sheet_{self.as_of:g}mm.csv and no VTU output before it", None
         try:
-            rows = sheet_from_vtu(os.path.join(d, self.vtu), self.axisymmetric)
+            rows = sheet_from_vtu(os.path.join(d, self.vtu), self.section)
         except ImportError:
             return [], f"no sheet_{self.as_of:g}mm.csv, and python3-vtk9 is missing to read {self.vtu}", None
         return rows, f"{self.vtu} (its nodal fields; no sheet_{self.as_of:g}mm.csv)", self.vtu_travel

@@ -1,7 +1,8 @@
 """The scene to render: the part made whole by its symmetry (an
-axisymmetric section revolved with a quarter left open, a 3-D quarter or
-half model mirrored), the tools, the split column's marker, and the
-direction the camera looks from."""
+axisymmetric section revolved with a quarter left open, a plane-strain
+section mirrored and extruded over its width, a 3-D quarter or half model
+mirrored), the tools, the split column's marker, and the direction the
+camera looks from."""
 import math
 import os
 
@@ -54,6 +55,19 @@ def swept(lines, start, angle, vtk):
     return sweep.GetOutput()
 
 
+def outline_of(section, vtk):
+    """The boundary edges of a 2-D section's surface (polydata lines)."""
+    outline = vtk.vtkFeatureEdges()
+    outline.SetInputData(section)
+    outline.BoundaryEdgesOn()
+    outline.FeatureEdgesOff()
+    outline.NonManifoldEdgesOff()
+    outline.ManifoldEdgesOff()
+    outline.ColoringOff()
+    outline.Update()
+    return outline.GetOutput()
+
+
 def open_gap(data):
     """(from, to) in degrees: the largest angular gap of a revolved copy's
     points about the z axis, the quarter it leaves open."""
@@ -81,15 +95,7 @@ def revolved_scene(run, grid, tools, split, vtk):
     else:
         gap = (270.0, 360.0)
         section = surface_of(grid, vtk)
-        outline = vtk.vtkFeatureEdges()
-        outline.SetInputData(section)
-        outline.BoundaryEdgesOn()
-        outline.FeatureEdgesOff()
-        outline.NonManifoldEdgesOff()
-        outline.ManifoldEdgesOff()
-        outline.ColoringOff()
-        outline.Update()
-        surface = append([swept(outline.GetOutput(), 0.0, 270.0, vtk),
+        surface = append([swept(outline_of(section, vtk), 0.0, 270.0, vtk),
                           rotated(section, 0.0, vtk, swap=True), rotated(section, 270.0, vtk, swap=True)], vtk)
     scene = {"surface": surface, "gap": gap, "azimuth": (gap[0] + gap[1]) / 2, "marker": None,
              "tools": None, "tool_lines": None}
@@ -106,6 +112,67 @@ def revolved_scene(run, grid, tools, split, vtk):
         a = math.radians(gap[0])  # the cut face the open quarter starts at
         scene["marker"] = (r * math.cos(a), r * math.sin(a), z)
     return scene
+
+
+def extruded(data, width, vtk):
+    """The x-z section's (polydata) points (x, z, 0) moved to (x, 0, z) and
+    swept along y over width: faces from its lines, a ribbon from faces."""
+    sweep = vtk.vtkLinearExtrusionFilter()
+    sweep.SetInputData(rotated(data, 0.0, vtk, swap=True))
+    sweep.SetExtrusionTypeToVectorExtrusion()
+    sweep.SetVector(0.0, width, 0.0)
+    sweep.CappingOff()
+    sweep.Update()
+    return sweep.GetOutput()
+
+
+def extruded_scene(run, grid, tools, split, vtk):
+    """The plane-strain part: the section mirrored at x = 0 (the whole
+    channel) and swept over the width it stands for, the section itself as
+    the two end faces; the tools as their profiles on the end faces; the
+    split column marked on the front face (y = 0)."""
+    width = float(run.summary.get("section_width", "1") or 1)
+    section = surface_of(both_halves(grid, vtk), vtk)
+    front = rotated(section, 0.0, vtk, swap=True)
+    surface = append([extruded(outline_of(section, vtk), width, vtk), front, shifted(front, width, vtk)], vtk)
+    # gap: the side view looks at the front face (y = 0) face-on.
+    scene = {"surface": surface, "gap": (-180.0, -90.0), "azimuth": -60.0, "marker": None,
+             "tools": None, "tool_lines": None}
+    if tools is not None:
+        lines = polydata(both_halves(tools, vtk), vtk)
+        front_lines = rotated(lines, 0.0, vtk, swap=True)
+        scene["tool_lines"] = append([front_lines, shifted(front_lines, width, vtk)], vtk)
+    if split and split["R0"] is not None:  # a column to mark
+        x, z = column_position(grid, split, True)[:2]
+        scene["marker"] = (x, 0.0, z)
+    return scene
+
+
+def both_halves(data, vtk):
+    """data and its mirror image at x = 0, as one grid."""
+    a = vtk.vtkAppendFilter()
+    a.AddInputData(data)
+    a.AddInputData(reflected(data, ["x"], vtk))
+    a.Update()
+    return merged(a.GetOutput(), vtk)
+
+
+def polydata(data, vtk):
+    f = vtk.vtkGeometryFilter()
+    f.SetInputData(data)
+    f.Update()
+    return f.GetOutput()
+
+
+def shifted(data, dy, vtk):
+    """data moved by dy along y."""
+    t = vtk.vtkTransform()
+    t.Translate(0.0, dy, 0.0)
+    f = vtk.vtkTransformFilter()
+    f.SetTransform(t)
+    f.SetInputData(data)
+    f.Update()
+    return f.GetOutput()
 
 
 def reflected(data, planes, vtk):

@@ -13,10 +13,20 @@ def mm(x, digits=2):
     return f"{x:.{digits}f} mm"
 
 
+def coordinate_names(model):
+    """r, z in the axisymmetric section; x, z in the plane-strain one; x, y, z."""
+    return {"axisymmetric": ("r", "z"), "plane strain": ("x", "z")}.get(model, ("x", "y", "z"))
+
+
 def coordinates(values, model):
-    """Coordinates with their names: r, z in the axisymmetric section, else x, y, z."""
-    names = ("r", "z") if model == "axisymmetric" else ("x", "y", "z")
-    return ", ".join(f"{n} = {v:.2f} mm" for n, v in zip(names, values))
+    """Coordinates with their names (coordinate_names)."""
+    return ", ".join(f"{n} = {v:.2f} mm" for n, v in zip(coordinate_names(model), values))
+
+
+def planform_label(model):
+    """The name of a column's planform position: its distance X0 from the
+    plane of symmetry in plane strain, else its radius R0."""
+    return "X0" if model == "plane strain" else "R0"
 
 
 def summary_value(summary, key, fmt="{:.2f}"):
@@ -36,9 +46,10 @@ def key_rows(run, split, column_at_split):
     if column_at_split:
         c = column_at_split
         rows.append((f"the split column{' at the end' if run.as_of is None else ''}",
-                     f"R0 = {c['reference_radius']:.2f} mm" +
-                     (f", {c['reference_angle']:.1f} degrees from x" if not run.axisymmetric else "") +
-                     f", now at {coordinates((c['r'], c['z']), 'axisymmetric')} (r: from the axis); "
+                     f"{planform_label(model)} = {c['reference_radius']:.2f} mm" +
+                     (f", {c['reference_angle']:.1f} degrees from x" if not run.section else "") +
+                     (f", now at {coordinates((c['r'], c['z']), model)}" if run.section else
+                      f", now at {coordinates((c['r'], c['z']), 'axisymmetric')} (r: from the axis)") + "; "
                      f"major strain {c['major_strain']:.3f}, minor {c['minor_strain']:.3f}: {ZONES[c['zone']][0]}"))
     flc0, source = run.flc0(), s.get("forming_limit", "?")
     if flc0 is not None and "(true strain" not in source:  # the source quotes it in engineering strain
@@ -48,7 +59,7 @@ def key_rows(run, split, column_at_split):
     release = reached(s, "holder_release_travel", run.as_of)
     rows.append(("blank holder", "not released" if release is None else f"released at punch travel {mm(release)}"))
     rows.append(("ironing (wall squeezed between punch and die)", ironing_text(run)))
-    if not run.axisymmetric and run.as_of is None and "ears" in s and drawn_through(run):
+    if not run.section and run.as_of is None and "ears" in s and drawn_through(run):
         rows.append(("earing", f"{s['ears']} ears, amplitude {summary_value(s, 'earing_amplitude')} mm "
                      f"around a mean cup height of {summary_value(s, 'cup_height_mean')} mm"))
     warnings = [s.get(f"warning_{k}", "?") for k in range(1, int(number(s, "warnings") or 0) + 1)]
@@ -90,19 +101,19 @@ def part_rows(run):
           f" (then {final:.0f} N {at_end}, {100 * (final / peak - 1):+.1f} %)")),
         ("minimum thickness", min_thickness(last, run.model)),
         ("largest thickening", f"{float(last['max_thickening_percent']):.1f} %"),
-        ("cup height", f"{float(last['cup_height']):.2f} mm"),
+        ("part height" if run.plane_strain else "cup height", f"{float(last['cup_height']):.2f} mm"),
         ("margin to the forming limit", f"{float(last['flc_margin_percent']):.1f} % "
          "(100 (1 − largest major strain / the FLC's at its minor strain); negative: past the curve)")]
 
 
 def min_thickness(row, model):
-    names = ("r", "z") if model == "axisymmetric" else ("x", "y", "z")
+    names = coordinate_names(model)
     at = [float(row.get(f"min_thickness_{n}", "nan")) for n in names]
     where = coordinates(at, model)
-    if model != "axisymmetric":
+    if len(names) == 3:
         where += f" ({math.degrees(math.atan2(at[1], at[0])):.1f} degrees from x)"
     return (f"{float(row['min_thickness']):.4f} mm (thinning {float(row['max_thinning_percent']):.1f} %) "
-            f"at R0 = {float(row['min_thickness_R0']):.2f} mm, now at {where}")
+            f"at {planform_label(model)} = {float(row['min_thickness_R0']):.2f} mm, now at {where}")
 
 
 def fracture_rows(run, model):

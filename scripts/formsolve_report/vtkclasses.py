@@ -10,7 +10,7 @@ from vtkmodules.vtkCommonTransforms import vtkTransform
 from vtkmodules.vtkFiltersCore import vtkAppendFilter, vtkAppendPolyData, vtkFeatureEdges, vtkPolyDataNormals
 from vtkmodules.vtkFiltersGeneral import vtkReflectionFilter, vtkTransformFilter
 from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter, vtkGeometryFilter
-from vtkmodules.vtkFiltersModeling import vtkRotationalExtrusionFilter
+from vtkmodules.vtkFiltersModeling import vtkLinearExtrusionFilter, vtkRotationalExtrusionFilter
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOXML import vtkXMLPUnstructuredGridReader, vtkXMLUnstructuredGridReader
@@ -24,6 +24,7 @@ from vtkmodules import vtkRenderingFreeType, vtkRenderingOpenGL2
 
 __all__ = ["vtkActor", "vtkAppendFilter", "vtkAppendPolyData", "vtkCellArray", "vtkDataSetMapper",
            "vtkDataSetSurfaceFilter", "vtkDoubleArray", "vtkFeatureEdges", "vtkGeometryFilter", "vtkLightKit",
+           "vtkLinearExtrusionFilter",
            "vtkLookupTable", "vtkPNGWriter", "vtkPoints", "vtkPolyData", "vtkPolyDataMapper",
            "vtkPolyDataNormals", "vtkReflectionFilter", "vtkRenderWindow", "vtkRenderer",
            "vtkRotationalExtrusionFilter", "vtkScalarBarActor", "vtkSphereSource", "vtkTextActor",

@@ -25,7 +25,7 @@ def read_vtu(path, fields=None):
     return reader.GetOutput()
 
 
-def sheet_from_vtu(path, axisymmetric):
+def sheet_from_vtu(path, section):
     """sheet.csv's rows rebuilt from a VTU's nodal fields: every node of a
     column carries the column's values; columns are the nodes' in-plane
     reference positions (current position minus displacement)."""
@@ -36,7 +36,7 @@ def sheet_from_vtu(path, axisymmetric):
     x = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
     ref = x - vtk_to_numpy(pd.GetArray("displacement"))[:, :3]
     fields = {n: vtk_to_numpy(pd.GetArray(n)) for n in SHEET_FIELDS}
-    planar = ref[:, :1] if axisymmetric else ref[:, :2]
+    planar = ref[:, :1] if section else ref[:, :2]
     labels = columns_of(planar, 1e-3)
     order = np.argsort(labels, kind="stable")
     starts = np.flatnonzero(np.r_[True, np.diff(labels[order]) != 0])
@@ -50,8 +50,8 @@ def sheet_from_vtu(path, axisymmetric):
         rows.append({
             "reference_radius": float(np.hypot(*p)) if len(p) == 2 else float(p[0]),
             "reference_angle": float(np.degrees(np.arctan2(p[1], p[0]))) if len(p) == 2 else 0.0,
-            "r": float(mid[0]) if axisymmetric else float(np.hypot(mid[0], mid[1])),
-            "z": float(mid[1] if axisymmetric else mid[2]),
+            "r": float(mid[0]) if section else float(np.hypot(mid[0], mid[1])),
+            "z": float(mid[1] if section else mid[2]),
             "thickness": float(fields["thickness"][first]),
             "thinning_percent": float(fields["thinning_percent"][first]),
             "major_strain": float(fields["major_strain"][first]),
