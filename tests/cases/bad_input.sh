@@ -85,6 +85,15 @@ expect axisymmetric_rectangle "Geometry/Blank shape" "$base" --set "Geometry/Mod
 expect axisymmetric_square_punch "Tools/Punch/Shape" "$base" --set "Geometry/Model=axisymmetric" \
   --set "Geometry/Blank shape=round" --set "Tools/Punch/Shape=rounded rectangle"
 expect revolved_in_3d "Output/Revolved copy" "$base" --set "Output/Revolved copy=true"
+# The plane-strain section: a rectangular strip, a straight punch, no revolved
+# copy, a strip longer than the die opening.
+channel="$cases/channel-short.prm"
+expect plane_strain_round "Geometry/Blank shape: must be rectangle" "$channel" \
+  --set "Geometry/Blank shape=round"
+expect plane_strain_square_punch "Tools/Punch/Shape" "$channel" \
+  --set "Tools/Punch/Shape=rounded rectangle"
+expect plane_strain_revolved "Output/Revolved copy" "$channel" --set "Output/Revolved copy=true"
+expect plane_strain_short_strip "Geometry/Blank length" "$channel" --set "Geometry/Blank length=70"
 expect zero_holder_force "Tools/Blank holder/Force" "$base" --set "Tools/Blank holder/Enabled=true" \
   --set "Tools/Blank holder/Force=0"
 expect flat_holder_force "Tools/Blank holder/Control" "$base" --set "Tools/Blank holder/Enabled=true" \
