@@ -113,11 +113,14 @@ namespace formsolve
           }
         else if (g.blank_shape == BlankShape::rectangle)
           {
+            // The slice is the half x >= 0 over the whole width, y >= 0.
+            const bool   slice  = g.model == Model::slice;
             const bool   half_x = model::symmetric_in_x(g.model);
             const bool   half_y = model::symmetric_in_y(g.model);
             const double lx = half_x ? 0.5 * g.blank_length : g.blank_length;
-            const double ly = half_y ? 0.5 * g.blank_width : g.blank_width;
-            const double h  = std::min(lx, ly);
+            const double ly =
+              half_y && !slice ? 0.5 * g.blank_width : g.blank_width;
+            const double                    h    = std::min(lx, ly);
             const std::vector<unsigned int> reps = {
               std::max(1u, static_cast<unsigned int>(std::round(lx / h))),
               std::max(1u, static_cast<unsigned int>(std::round(ly / h)))};
@@ -222,7 +225,9 @@ namespace formsolve
                     if (model::symmetric_in_x(g.model) && std::abs(c[0]) < tol)
                       id = symmetry_x;
                     else if (model::symmetric_in_y(g.model) &&
-                             std::abs(c[1]) < tol)
+                             (std::abs(c[1]) < tol ||
+                              (g.model == Model::slice &&
+                               std::abs(c[1] - g.blank_width) < tol)))
                       id = symmetry_y;
                     else if (rim)
                       face->set_all_manifold_ids(rim_manifold);

@@ -8,7 +8,7 @@ namespace formsolve
   {
     std::string model_names()
     {
-      return "axisymmetric|plane strain|half|quarter|full";
+      return "axisymmetric|plane strain|half|quarter|full|slice";
     }
 
     Model parse_model(const std::string &n)
@@ -19,6 +19,8 @@ namespace formsolve
         return Model::plane_strain;
       if (n == "half")
         return Model::half;
+      if (n == "slice")
+        return Model::slice;
       if (n == "quarter")
         return Model::quarter;
       AssertThrow(n == "full",
@@ -41,6 +43,8 @@ namespace formsolve
             return "quarter";
           case Model::full:
             return "full";
+          case Model::slice:
+            return "slice";
         }
       return "";
     }
@@ -61,20 +65,22 @@ namespace formsolve
 
     double symmetry_factor(const Model m)
     {
-      return m == Model::quarter                            ? 4.
-             : m == Model::half || m == Model::plane_strain ? 2.
-                                                            : 1.;
+      if (m == Model::quarter)
+        return 4.;
+      return m == Model::half || m == Model::plane_strain || m == Model::slice
+               ? 2.
+               : 1.;
     }
 
     bool symmetric_in_x(const Model m)
     {
       return m == Model::half || m == Model::quarter ||
-             m == Model::plane_strain;
+             m == Model::plane_strain || m == Model::slice;
     }
 
     bool symmetric_in_y(const Model m)
     {
-      return m == Model::quarter;
+      return m == Model::quarter || m == Model::slice;
     }
   } // namespace model
 } // namespace formsolve

@@ -29,8 +29,11 @@ namespace formsolve
         "rectangular blank whose Blank width is the part's length along y "
         "(2-D; round tools are straight along y with their profile in x-z); "
         "quarter: x >= 0, y >= 0 with symmetry planes x = 0 and y = 0; half: "
-        "x >= 0 with the symmetry plane x = 0; full: the whole sheet. Forces "
-        "are always reported for the full part.",
+        "x >= 0 with the symmetry plane x = 0; full: the whole sheet; slice: "
+        "the plane-strain section in 3-D, x >= 0 over 0 <= y <= Blank width "
+        "with symmetry planes x = 0, y = 0 and y = Blank width (a thin "
+        "rectangular blank under tools straight along y). Forces are always "
+        "reported for the full part.",
         [this](const std::string &t) { model = model::parse_model(t); });
       d.add(
         "Blank shape",
@@ -87,11 +90,11 @@ namespace formsolve
         require(blank_shape == BlankShape::round,
                 "Geometry/Blank shape",
                 "must be round for Model = axisymmetric");
-      if (model == model::Model::plane_strain)
+      if (model == model::Model::plane_strain || model == model::Model::slice)
         require(blank_shape == BlankShape::rectangle,
                 "Geometry/Blank shape",
-                "must be rectangle for Model = plane strain (Blank length "
-                "across the tools, Blank width along them)");
+                "must be rectangle for Model = " + model::name(model) +
+                  " (Blank length across the tools, Blank width along them)");
     }
 
     void Mesh::declare(Declarations &d)

@@ -98,11 +98,12 @@ namespace formsolve
             const double lx = model::symmetric_in_x(g.model)
                                 ? 0.5 * g.blank_length
                                 : g.blank_length;
-            const double ly = model::symmetric_in_y(g.model)
-                                ? 0.5 * g.blank_width
-                                : g.blank_width;
-            const double h  = std::min(lx, ly);
-            coarse          = std::max(1., std::round(lx / h)) *
+            const double ly =
+              model::symmetric_in_y(g.model) && g.model != model::Model::slice
+                ? 0.5 * g.blank_width
+                : g.blank_width;
+            const double h = std::min(lx, ly);
+            coarse         = std::max(1., std::round(lx / h)) *
                      std::max(1., std::round(ly / h));
           }
         return coarse * std::ldexp(1., 2 * m.refinements) * m.layers;

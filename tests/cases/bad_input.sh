@@ -94,6 +94,8 @@ expect plane_strain_square_punch "Tools/Punch/Shape" "$channel" \
   --set "Tools/Punch/Shape=rounded rectangle"
 expect plane_strain_revolved "Output/Revolved copy" "$channel" --set "Output/Revolved copy=true"
 expect plane_strain_short_strip "Geometry/Blank length" "$channel" --set "Geometry/Blank length=70"
+expect slice_round "Geometry/Blank shape: must be rectangle for Model = slice" "$cases/channel-slice.prm" \
+  --set "Geometry/Blank shape=round"
 expect zero_holder_force "Tools/Blank holder/Force" "$base" --set "Tools/Blank holder/Enabled=true" \
   --set "Tools/Blank holder/Force=0"
 expect flat_holder_force "Tools/Blank holder/Control" "$base" --set "Tools/Blank holder/Enabled=true" \

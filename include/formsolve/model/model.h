@@ -17,10 +17,12 @@ namespace formsolve
                     // strain along y, the part's width along y
       half,         // 3-D, x >= 0, symmetry plane x = 0
       quarter,      // 3-D, x >= 0 and y >= 0, symmetry planes x = 0, y = 0
-      full          // 3-D, no symmetry
+      full,         // 3-D, no symmetry
+      slice         // 3-D, x >= 0, 0 <= y <= width, symmetry planes x = 0
+                    // and both y faces: the plane-strain section in 3-D
     };
 
-    /// "axisymmetric|plane strain|half|quarter|full", for
+    /// "axisymmetric|plane strain|half|quarter|full|slice", for
     /// Patterns::Selection.
     std::string model_names();
     /// Throws naming Geometry/Model for an unknown name.
@@ -35,10 +37,11 @@ namespace formsolve
     unsigned int space_dimension(const Model m);
     /// Factor from the modelled part to the full part. Axisymmetric models
     /// integrate over the full ring (2 pi r), so their factor is 1; the
-    /// plane-strain section is the half x >= 0 of the part's width.
+    /// plane-strain section and the slice are the half x >= 0 of the part's
+    /// width.
     double symmetry_factor(const Model m);
-    /// Whether the plane x = 0 (y = 0) bounds the model with a symmetry
-    /// condition (no normal velocity).
+    /// Whether the plane x = 0 (y = 0, and for the slice also y = width)
+    /// bounds the model with a symmetry condition (no normal velocity).
     bool symmetric_in_x(const Model m);
     bool symmetric_in_y(const Model m);
   } // namespace model
