@@ -51,50 +51,19 @@ namespace
       // v_x = 0 at x = -L/2 and V at x = L/2; v_y = v_z = 0 at the corner
       // (-L/2, -W/2, 0) and v_z = 0 at (-L/2, W/2, 0) (no rigid motion);
       // plane strain: v_y = 0 on y = +-W/2.
-      std::map<types::global_dof_index, Point<3>> points;
-      DoFTools::map_dofs_to_support_points(state.reference_mapping,
-                                           state.dof_handler,
-                                           points);
-      for (auto *c : {&bc, &homogeneous})
-        {
-          c->clear();
-          c->reinit(state.relevant);
-          c->merge(state.constraints);
-        }
-      std::vector<types::global_dof_index> dofs(state.fe.n_dofs_per_cell());
-      const auto fix = [&](const types::global_dof_index i, const double v) {
-        for (auto *c : {&bc, &homogeneous})
-          if (!c->is_constrained(i))
-            {
-              c->add_line(i);
-              c->set_inhomogeneity(i, c == &bc ? v : 0.);
-            }
-      };
-      for (const auto &cell : state.dof_handler.active_cell_iterators())
-        if (!cell->is_artificial())
-          {
-            cell->get_dof_indices(dofs);
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              {
-                const Point<3>     p = points[dofs[i]];
-                const unsigned int c =
-                  state.fe.system_to_component_index(i).first;
-                const bool left   = std::abs(p[0] + L / 2) < 1e-9,
-                           right  = std::abs(p[0] - L / 2) < 1e-9,
-                           side   = std::abs(std::abs(p[1]) - W / 2) < 1e-9,
-                           bottom = std::abs(p[2]) < 1e-9;
-                if (c == 0 && (left || right))
-                  fix(dofs[i], right ? V : 0.);
-                if (c == 1 &&
-                    (plane_strain ? side : left && bottom && p[1] < 0))
-                  fix(dofs[i], 0);
-                if (c == 2 && left && bottom && side)
-                  fix(dofs[i], 0);
-              }
-          }
-      bc.close();
-      homogeneous.close();
-      setup_system();
+      prescribe_velocities(
+        [&](const Point<3> &p, const unsigned int c, double &value) {
+          const bool left   = std::abs(p[0] + L / 2) < 1e-9,
+                     right  = std::abs(p[0] - L / 2) < 1e-9,
+                     side   = std::abs(std::abs(p[1]) - W / 2) < 1e-9,
+                     bottom = std::abs(p[2]) < 1e-9;
+          value             = c == 0 && right ? V : 0.;
+          if (c == 0)
+            return left || right;
+          if (c == 1)
+            return plane_strain ? side : left && bottom && p[1] < 0;
+          return left && bottom && side;
+        });
     }
 
     void solve_flow() { solve_velocity(1e-11); }

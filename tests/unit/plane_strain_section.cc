@@ -49,45 +49,14 @@ namespace
             const double                omega)
         : StateProblem(state, assembler, dt, true)
     {
-      std::map<types::global_dof_index, Point<2>> points;
-      DoFTools::map_dofs_to_support_points(state.reference_mapping,
-                                           state.dof_handler,
-                                           points);
-      for (auto *c : {&bc, &homogeneous})
-        {
-          c->clear();
-          c->reinit(state.relevant);
-          c->merge(state.constraints); // v_x = 0 on the plane x = 0
-        }
-      const auto fix = [&](const types::global_dof_index i, const double v) {
-        for (auto *c : {&bc, &homogeneous})
-          if (!c->is_constrained(i))
-            {
-              c->add_line(i);
-              c->set_inhomogeneity(i, c == &bc ? v : 0.);
-            }
-      };
-      std::vector<types::global_dof_index> dofs(state.fe.n_dofs_per_cell());
-      for (const auto &cell : state.dof_handler.active_cell_iterators())
-        if (!cell->is_artificial())
-          {
-            cell->get_dof_indices(dofs);
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              {
-                const Point<2>     p = points[dofs[i]];
-                const unsigned int c =
-                  state.fe.system_to_component_index(i).first;
-                const bool end   = std::abs(p[0] - L / 2) < 1e-9;
-                const bool pivot = std::abs(p[1] - (bend ? T / 2 : 0)) < 1e-9;
-                if (c == 0 && end)
-                  fix(dofs[i], bend ? omega * (p[1] - T / 2) : V);
-                if (c == 1 && end && pivot)
-                  fix(dofs[i], 0);
-              }
-          }
-      bc.close();
-      homogeneous.close();
-      setup_system();
+      // v_x = 0 on the plane x = 0 comes with the State's constraints.
+      prescribe_velocities(
+        [&](const Point<2> &p, const unsigned int c, double &value) {
+          const bool end   = std::abs(p[0] - L / 2) < 1e-9;
+          const bool pivot = std::abs(p[1] - (bend ? T / 2 : 0)) < 1e-9;
+          value            = c == 0 ? (bend ? omega * (p[1] - T / 2) : V) : 0;
+          return end && (c == 0 || pivot);
+        });
       solve_velocity(1e-11);
     }
 

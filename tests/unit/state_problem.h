@@ -166,6 +166,49 @@ namespace test
     }
 
   protected:
+    /// bc and homogeneous from the State's constraints and the velocities
+    /// @p prescribe(point, component, value) sets (true: the DoF gets
+    /// value in bc, 0 in homogeneous); then closes both and sets up the
+    /// system.
+    template <class Prescribe>
+    void prescribe_velocities(const Prescribe &prescribe)
+    {
+      std::map<dealii::types::global_dof_index, dealii::Point<dim>> points;
+      dealii::DoFTools::map_dofs_to_support_points(state.reference_mapping,
+                                                   state.dof_handler,
+                                                   points);
+      for (auto *c : {&bc, &homogeneous})
+        {
+          c->clear();
+          c->reinit(state.relevant);
+          c->merge(state.constraints);
+        }
+      std::vector<dealii::types::global_dof_index> dofs(
+        state.fe.n_dofs_per_cell());
+      for (const auto &cell : state.dof_handler.active_cell_iterators())
+        if (!cell->is_artificial())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              {
+                double value = 0;
+                if (!prescribe(points[dofs[i]],
+                               state.fe.system_to_component_index(i).first,
+                               value))
+                  continue;
+                for (auto *c : {&bc, &homogeneous})
+                  if (!c->is_constrained(dofs[i]))
+                    {
+                      c->add_line(dofs[i]);
+                      c->set_inhomogeneity(dofs[i], c == &bc ? value : 0.);
+                    }
+              }
+          }
+      bc.close();
+      homogeneous.close();
+      setup_system();
+    }
+
     /// The matrix and residual for the closed constraints.
     void setup_system()
     {
