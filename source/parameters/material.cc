@@ -255,6 +255,19 @@ namespace formsolve
             number("-"),
             "alpha (-): the mean stress is sigma_m = alpha K/rate0 "
             "tr(strain rate), integrated with reduced quadrature.");
+      d.declare("Young's modulus",
+                "",
+                text("a number > 0 (MPa), or empty: not given"),
+                "E (MPa), for springback only (Springback/Enabled): the "
+                "forming itself is rigid-plastic. Empty: not given.",
+                [this](const std::string &t) {
+                  young_modulus =
+                    optional_number(t, "Material/Young's modulus");
+                });
+      d.add("Poisson's ratio",
+            poisson_ratio,
+            number("-", 0, 0.4999),
+            "nu (-), for springback only (with Young's modulus).");
       anisotropy.declare(d);
       declare_fracture(d);
     }
@@ -290,6 +303,9 @@ namespace formsolve
                        "Material/Limiting strain rate",
                        "1/s");
       require_positive(volumetric_penalty, "Material/Volumetric penalty", "");
+      require(std::isnan(young_modulus) || young_modulus > 0,
+              "Material/Young's modulus",
+              "must be positive, got " + str(young_modulus));
       anisotropy.validate();
       require(std::isnan(oyane_b) || oyane_b > 0,
               "Material/Oyane b",

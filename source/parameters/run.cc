@@ -28,6 +28,7 @@ namespace formsolve
       nonlinear.declare(d);
       linear.declare(d);
       split.declare(d);
+      springback.declare(d);
       output.declare(d);
     }
 
@@ -263,6 +264,7 @@ namespace formsolve
       nonlinear.validate();
       linear.validate();
       split.validate();
+      springback.validate();
       output.validate();
 
       check_tool_shapes(*this);
@@ -291,6 +293,7 @@ namespace formsolve
               "'draw-through' needs an enabled die with an opening (Shape "
               "round or rounded rectangle)");
       check_outlines(*this);
+      check_springback(*this);
       check_memory(*this);
     }
   } // namespace parameters

@@ -64,6 +64,7 @@ namespace formsolve
         });
       if (!r.changed)
         return false;
+      forces_current = false;
       step_solver.reinit();
       auto &log = *refinement_log;
       log.set("step", state.step);
@@ -304,6 +305,8 @@ namespace formsolve
       {
         TimerOutput::Scope t(timer, "state update");
         state.advance(report.dt, history_update);
+        forces_current = true;
+        last_dt        = report.dt;
       }
       summary.steps = state.step;
       summary.n_dofs =

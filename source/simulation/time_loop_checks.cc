@@ -63,6 +63,8 @@ namespace formsolve
                     "lies under the blank holder (its opening is as "
                     "large as the blank or larger); it would not act "
                     "on the flange"));
+      if (prm.springback.enabled)
+        springback::check_supports(state); // before any work
       scene_warnings.clear();
       state.update_contact_areas(); // which surface faces which tool
       check_reach();

@@ -238,6 +238,8 @@ namespace formsolve
       save_checkpoint(summary);
 
       summary.wall_time = seconds();
+      if (prm.springback.enabled && !summary.solver_failed)
+        spring_back();
       sheet.measure(state, damage);
       sheet.write_csv(comm, prm.output.directory);
       // Ears are the rim of a drawn cup: before draw-through the rim is

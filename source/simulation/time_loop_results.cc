@@ -225,7 +225,7 @@ namespace formsolve
       for (unsigned int z = 0; z < material::n_safety_zones; ++z)
         f << "\ncolumns_" << material::zone_key(material::SafetyZone(z))
           << " = " << sh.zone_count[z];
-      f << split_summary();
+      f << split_summary() << springback_summary();
       if (!earing.angle.empty())
         {
           f << "\ncup_height_mean = " << earing.mean
@@ -303,6 +303,8 @@ namespace formsolve
                       ": the tool never touched the sheet (its force stayed "
                       "0 over the run); check its position and stroke "
                       "against the blank");
+      for (const auto &s : springback_warnings())
+        w.push_back(s);
       return w;
     }
 

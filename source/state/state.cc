@@ -42,6 +42,33 @@ namespace formsolve
     }
 
     template <int dim>
+    void add_model_constraints(const model::Model         m,
+                               const Mapping<dim>        &reference,
+                               const DoFHandler<dim>     &dof_handler,
+                               AffineConstraints<double> &constraints)
+    {
+      // Nothing across a symmetry plane; nothing radial on the axis of an
+      // axisymmetric model.
+      const Functions::ZeroFunction<dim> zero(dim);
+      const auto                        &fe = dof_handler.get_fe();
+      auto fix = [&](const types::boundary_id id, const unsigned int c) {
+        VectorTools::interpolate_boundary_values(
+          reference,
+          dof_handler,
+          id,
+          zero,
+          constraints,
+          fe.component_mask(FEValuesExtractors::Scalar(c)));
+      };
+      if (model::symmetric_in_x(m))
+        fix(geometry::symmetry_x, 0);
+      if (model::symmetric_in_y(m))
+        fix(geometry::symmetry_y, 1);
+      if (m == model::Model::axisymmetric)
+        fix(geometry::axis, 0);
+    }
+
+    template <int dim>
     void State<dim>::setup_dofs()
     {
       mapping.reset();
@@ -52,25 +79,10 @@ namespace formsolve
       constraints.clear();
       constraints.reinit(relevant);
       DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-      // No velocity normal to a symmetry plane; no radial velocity on the
-      // axis of an axisymmetric model.
-      const Functions::ZeroFunction<dim> zero(dim);
-      auto fix = [&](const types::boundary_id id, const unsigned int c) {
-        VectorTools::interpolate_boundary_values(
-          reference_mapping,
-          dof_handler,
-          id,
-          zero,
-          constraints,
-          fe.component_mask(FEValuesExtractors::Scalar(c)));
-      };
-      const model::Model m = prm.geometry.model;
-      if (model::symmetric_in_x(m))
-        fix(geometry::symmetry_x, 0);
-      if (model::symmetric_in_y(m))
-        fix(geometry::symmetry_y, 1);
-      if (m == model::Model::axisymmetric)
-        fix(geometry::axis, 0);
+      add_model_constraints(prm.geometry.model,
+                            reference_mapping,
+                            dof_handler,
+                            constraints);
       constraints.close();
 
       velocity.reinit(owned, comm);
@@ -261,7 +273,12 @@ namespace formsolve
       return Utilities::MPI::min(d, comm);
     }
 
-#define INSTANTIATE(dim) template struct State<dim>;
+#define INSTANTIATE(dim)                                       \
+  template struct State<dim>;                                  \
+  template void add_model_constraints(const model::Model,      \
+                                      const Mapping<dim> &,    \
+                                      const DoFHandler<dim> &, \
+                                      AffineConstraints<double> &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace state

@@ -94,6 +94,17 @@ expect plane_strain_square_punch "Tools/Punch/Shape" "$channel" \
   --set "Tools/Punch/Shape=rounded rectangle"
 expect plane_strain_revolved "Output/Revolved copy" "$channel" --set "Output/Revolved copy=true"
 expect plane_strain_short_strip "Geometry/Blank length" "$channel" --set "Geometry/Blank length=70"
+# Springback: no elastic constants; a support with the wrong number of
+# coordinates; supports that leave the part free to move (checked before
+# any step).
+expect springback_no_modulus "Material/Young's modulus: must be given for springback" \
+  "$channel" --set "Springback/Enabled=true"
+expect springback_support_coordinates "Springback/Supports: a point has 3 coordinates" \
+  "$channel" --set "Springback/Enabled=true" --set "Material/Young's modulus=206000" \
+  --set "Springback/Supports=0, 0, 0: z"
+expect springback_support_free "Springback/Supports: leave the part free to move (translation along z)" \
+  "$channel" --set "Springback/Enabled=true" --set "Material/Young's modulus=206000" \
+  --set "Springback/Supports=10, 0: x"
 expect slice_round "Geometry/Blank shape: must be rectangle for Model = slice" "$cases/channel-slice.prm" \
   --set "Geometry/Blank shape=round"
 expect zero_holder_force "Tools/Blank holder/Force" "$base" --set "Tools/Blank holder/Enabled=true" \

@@ -60,6 +60,10 @@ namespace formsolve
       {
         return contact.accepted_factors();
       }
+      /// The body's internal forces int B^T sigma dV of the point evaluated
+      /// last (at the end of a converged step: the converged iterate's,
+      /// which the tools balance); condensed by the state's constraints.
+      const VectorType &body_forces() const { return body_residual; }
       /// Velocity of force control j along its direction at the accepted
       /// iterate (mm/s).
       double control_velocity(const unsigned int j) const

@@ -52,20 +52,24 @@ namespace formsolve
 
     struct Material
     {
-      FlowCurve  flow_curve            = FlowCurve::swift;
-      double     strength_coefficient  = 829;   // K (MPa)
-      double     hardening_exponent    = 0.2;   // n
-      double     prestrain             = 0.002; // eps_0
-      double     voce_saturation       = 0;     // A (MPa)
-      double     voce_amplitude        = 0;     // B (MPa)
-      double     voce_rate             = 0;     // C (-)
-      double     tensile_strength      = 0;     // R_m (MPa); 0: flow curve
-      double     rate_sensitivity      = 0;     // m
-      double     reference_strain_rate = 1;     // 1/s
-      double     limiting_strain_rate  = 1e-4;  // 1/s, rigid-zone cutoff
-      RigidZone  rigid_zone            = RigidZone::smooth;
-      double     volumetric_penalty    = 1e4; // alpha (-)
-      Anisotropy anisotropy;                  // yield criterion and its data
+      FlowCurve flow_curve            = FlowCurve::swift;
+      double    strength_coefficient  = 829;   // K (MPa)
+      double    hardening_exponent    = 0.2;   // n
+      double    prestrain             = 0.002; // eps_0
+      double    voce_saturation       = 0;     // A (MPa)
+      double    voce_amplitude        = 0;     // B (MPa)
+      double    voce_rate             = 0;     // C (-)
+      double    tensile_strength      = 0;     // R_m (MPa); 0: flow curve
+      double    rate_sensitivity      = 0;     // m
+      double    reference_strain_rate = 1;     // 1/s
+      double    limiting_strain_rate  = 1e-4;  // 1/s, rigid-zone cutoff
+      RigidZone rigid_zone            = RigidZone::smooth;
+      double    volumetric_penalty    = 1e4; // alpha (-)
+      // Elasticity, for springback only (the forming is rigid-plastic):
+      // NaN until given.
+      double young_modulus = std::numeric_limits<double>::quiet_NaN(); // MPa
+      double poisson_ratio = 0.3;                                      // (-)
+      Anisotropy anisotropy; // yield criterion and its data
 
       // Ductile fracture: no criterion unless one is chosen with the
       // constants of this sheet (NaN: not given).
@@ -89,6 +93,9 @@ namespace formsolve
       {
         return std::isfinite(oyane_a) && std::isfinite(oyane_b);
       }
+
+      /// Whether Young's modulus is given (springback needs it).
+      bool elastic_given() const { return std::isfinite(young_modulus); }
 
       /// The flow curve's stress scale (MPa): K, or A for Voce.
       double stress_scale() const

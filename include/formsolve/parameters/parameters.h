@@ -9,6 +9,7 @@
 #include <formsolve/parameters/refinement.h>
 #include <formsolve/parameters/solvers.h>
 #include <formsolve/parameters/split.h>
+#include <formsolve/parameters/springback.h>
 #include <formsolve/parameters/tools.h>
 
 namespace formsolve
@@ -27,6 +28,7 @@ namespace formsolve
       NonlinearSolver nonlinear;
       LinearSolver    linear;
       Split           split;
+      Springback      springback;
       Output          output;
 
       /// Declares every subsection, bound to these members: reading the

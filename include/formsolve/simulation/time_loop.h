@@ -25,6 +25,7 @@
 #include <formsolve/postprocess/vtu_writer.h>
 #include <formsolve/refinement/mesh_refinement.h>
 #include <formsolve/simulation/checkpoint.h>
+#include <formsolve/springback/release.h>
 #include <formsolve/state/state.h>
 
 #include <chrono>
@@ -151,6 +152,14 @@ namespace formsolve
       bool checkpoint_due() const;
       /// Last output and checkpoint, summaries, report.
       void finish(RunSummary &summary);
+      /// Springback/Enabled: the release of the end of forming, its file
+      /// and its lines on screen (source/simulation/time_loop_springback.cc).
+      /// A release that fails is said, and the forming results stay.
+      void spring_back();
+      /// The springback lines of run-summary.txt ("" without it).
+      std::string springback_summary() const;
+      /// What the release's end state and result warrant a warning for.
+      std::vector<std::string> springback_warnings() const;
       /// After an error past the first step: run-summary.txt, sheet.csv of
       /// the last converged step and the report, by rank 0 alone (the other
       /// ranks may not share the error); nothing collective.
@@ -255,6 +264,14 @@ namespace formsolve
       /// What check_initial_scene found worth a warning.
       std::vector<std::string> scene_warnings;
       unsigned int             refinement_rows = 0;
+      /// The release (Springback/Enabled), once done; why it failed.
+      std::unique_ptr<springback::ReleaseSummary> released;
+      std::string                                 springback_failure;
+      double springback_seconds = 0; // its wall time
+      /// The step solver's body forces are those of the current mesh's
+      /// last converged step (false after a mesh change without a step).
+      bool   forces_current = false;
+      double last_dt        = 0; // s, of the last converged step
     };
   } // namespace simulation
 } // namespace formsolve

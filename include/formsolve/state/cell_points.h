@@ -52,6 +52,15 @@ namespace formsolve
         return frame.map(q);
       }
 
+      /// The orthotropy frame at full point q (columns RD, TD, ND); the
+      /// identity for an isotropic law, which has none.
+      dealii::Tensor<2, 3> axes(const unsigned int q) const
+      {
+        return frame.map(q)
+                 ? frame.frame(q)
+                 : dealii::Tensor<2, 3>(dealii::unit_symmetric_tensor<3>());
+      }
+
     private:
       material::HillOrientation<dim>             frame;
       model::CellKinematics<dim>                 kf, kr;

@@ -55,6 +55,15 @@ namespace formsolve
       std::vector<double>   control_velocities;
     };
 
+    /// The model's own constraints on a vector field of @p dof_handler: no
+    /// component normal to a symmetry plane, no radial one on the axis
+    /// (the velocity of a step, the displacement of the springback).
+    template <int dim>
+    void add_model_constraints(const model::Model                 m,
+                               const dealii::Mapping<dim>        &reference,
+                               const dealii::DoFHandler<dim>     &dof_handler,
+                               dealii::AffineConstraints<double> &constraints);
+
     template <int dim>
     struct State
     {

@@ -1,0 +1,146 @@
+#include <deal.II/base/utilities.h>
+
+#include <formsolve/parameters/declared.h>
+#include <formsolve/parameters/parameters.h>
+#include <formsolve/parameters/require.h>
+#include <formsolve/parameters/springback.h>
+
+#include <cmath>
+#include <cstdlib>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    std::vector<SupportPoint> parse_supports(const std::string &text)
+    {
+      std::vector<SupportPoint> points;
+      for (const auto &item : dealii::Utilities::split_string_list(text, ';'))
+        {
+          if (item.empty())
+            continue;
+          const auto   colon = item.find(':');
+          SupportPoint s;
+          bool         ok = colon != std::string::npos;
+          if (ok)
+            {
+              for (const auto &x :
+                   dealii::Utilities::split_string_list(item.substr(0, colon),
+                                                        ','))
+                {
+                  char *end = nullptr;
+                  s.coordinates.push_back(std::strtod(x.c_str(), &end));
+                  ok = ok && end != x.c_str() && *end == '\0' &&
+                       std::isfinite(s.coordinates.back());
+                }
+              s.components = dealii::Utilities::trim(item.substr(colon + 1));
+              ok           = ok && !s.components.empty() &&
+                   s.components.find_first_not_of("rxyz") == std::string::npos;
+            }
+          require(ok,
+                  "Springback/Supports",
+                  "'" + item +
+                    "' is not 'coordinates: components' (e.g. '0, 0, 10: "
+                    "z' or '35, 0: xz')");
+          points.push_back(s);
+        }
+      return points;
+    }
+
+    void Springback::declare(Declarations &d)
+    {
+      const Subsection s(d, "Springback");
+      d.add("Enabled",
+            enabled,
+            "After the last step, take the tools away and release the "
+            "end-of-forming stresses elastically on the deformed mesh (with "
+            "an elasto-plastic correction where the released stress "
+            "reverses the yield), and write the sprung part "
+            "(springback.pvtu) and its measures. Needs Material/Young's "
+            "modulus.");
+      d.add("Element degree",
+            degree,
+            whole_number(0, 3),
+            "Polynomial degree of the release's displacement on the forming "
+            "mesh; 0: the forming's (Mesh/Element degree), whose equilibrium "
+            "the end stress satisfies exactly. A higher degree than the "
+            "forming's avoids the shear locking of coarse trilinear elements "
+            "in bending, but takes the tools' forces as a load density "
+            "(doc/theory.md, section 12; doc/springback.md compares them).");
+      d.declare(
+        "Supports",
+        "",
+        text("'coordinates: components' items separated by ';', or empty"),
+        "How the part is held while it springs back, as a measuring "
+        "fixture holds it: 'x, y, z: components; ...' (r, z or x, z in the "
+        "2-D models; mm, current configuration), each fixing the named "
+        "displacement components (letters of the coordinates) of the mesh "
+        "node nearest to the point. The symmetry planes stay. Empty: the "
+        "minimal support, which removes the rigid-body motions the symmetry "
+        "planes leave and nothing more (statically determinate, so the "
+        "sprung shape does not depend on it).",
+        [this](const std::string &t) { supports = parse_supports(t); });
+      d.add("Tolerance",
+            tolerance,
+            number("-", 0, 1),
+            "The release is solved when its residual is at most this "
+            "fraction of the released forces (-).");
+      d.add("Maximum iterations",
+            max_iterations,
+            whole_number(1, 1000),
+            "Newton iterations of the elasto-plastic release at most (one "
+            "when no point yields again).");
+      d.add("Sound strain ratio",
+            sound_strain_ratio,
+            number("-", 1),
+            "The rigid-plastic end state is a sound start for the elastic "
+            "release where the equivalent plastic strain is at least this "
+            "many yield strains sigma_y/E (-); see Unsound volume warning.");
+      d.add("Unsound volume warning",
+            unsound_volume_warning,
+            number("-", 0, 1),
+            "Warn when more than this fraction of the part's volume has "
+            "less plastic strain than Sound strain ratio yield strains (-): "
+            "its end stress is not what an elasto-plastic forming would "
+            "leave (doc/theory.md, section 12).");
+    }
+
+    void Springback::validate() const
+    {
+      require(std::isfinite(tolerance) && tolerance > 0,
+              "Springback/Tolerance",
+              "must be positive");
+    }
+
+    void check_springback(const Run &run)
+    {
+      const auto &sb = run.springback;
+      if (!sb.enabled)
+        return;
+      require(run.material.elastic_given(),
+              "Material/Young's modulus",
+              "must be given for springback (Springback/Enabled = true): "
+              "the release is elastic");
+      const auto  names = model::coordinate_names(run.geometry.model);
+      std::string letters;
+      for (const auto &n : names)
+        letters += n;
+      for (const auto &p : sb.supports)
+        {
+          require(p.coordinates.size() == names.size(),
+                  "Springback/Supports",
+                  "a point has " + std::to_string(p.coordinates.size()) +
+                    " coordinates; Geometry/Model = " +
+                    model::name(run.geometry.model) + " needs " +
+                    std::to_string(names.size()) + " (" + letters + ")");
+          require(p.components.find_first_not_of(letters) == std::string::npos,
+                  "Springback/Supports",
+                  "components '" + p.components +
+                    "' are not among the "
+                    "coordinates " +
+                    letters +
+                    " of Geometry/Model = " + model::name(run.geometry.model));
+        }
+    }
+  } // namespace parameters
+} // namespace formsolve

@@ -1,0 +1,149 @@
+// After the last step: the springback release of the formed part
+// (Springback/Enabled; doc/springback.md), its file, screen lines, summary
+// lines and warnings.
+#include <deal.II/base/mpi.h>
+
+#include <formsolve/app/error_exit.h>
+#include <formsolve/model/current_mapping.h>
+#include <formsolve/model/dimensions.h>
+#include <formsolve/simulation/time_loop.h>
+#include <formsolve/springback/springback_output.h>
+
+#include <sstream>
+
+namespace formsolve
+{
+  namespace simulation
+  {
+    using namespace dealii;
+
+    template <int dim>
+    void TimeLoop<dim>::spring_back()
+    {
+      const auto         t0 = std::chrono::steady_clock::now();
+      TimerOutput::Scope scope(timer, "springback");
+      try
+        {
+          const material::ReleaseLaw law(prm.material);
+          // The configuration where the last step found its equilibrium
+          // (its start): the stress there is the one the tools balanced,
+          // while on the current mesh the last velocity no longer matches
+          // elements that turned during the step (around a die radius).
+          VectorType start(state.displacement);
+          start.add(-last_dt, state.velocity);
+          model::CurrentMapping<dim> configuration(prm.mesh.degree);
+          configuration.initialize(state.reference_mapping,
+                                   state.dof_handler,
+                                   start,
+                                   true);
+          // The forces the tools balanced at the last converged step, unless
+          // the mesh changed since.
+          springback::Release<dim> release(
+            state,
+            configuration,
+            material,
+            law,
+            forces_current ? &step_solver.forming_system().body_forces()
+                           : nullptr);
+          const auto s = release.solve();
+          springback::write_sprung_part(release, state, prm.output.directory);
+          released = std::make_unique<springback::ReleaseSummary>(s);
+          pcout << "springback: released " << s.released_force
+                << " N of internal force in " << s.iterations
+                << " iteration(s); largest displacement component "
+                << s.max_displacement << " mm; yields again in "
+                << 100 * s.yielded_fraction << " % of the volume; held "
+                << s.supports << "\n";
+        }
+      catch (const std::exception &e)
+        {
+          springback_failure = app::exception_text(e);
+          pcout << "springback failed: " << springback_failure << "\n";
+        }
+      springback_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+          .count();
+      pcout << std::flush;
+    }
+
+    template <int dim>
+    std::string TimeLoop<dim>::springback_summary() const
+    {
+      if (!prm.springback.enabled)
+        return "";
+      std::ostringstream f;
+      f.precision(8);
+      f << "\nspringback = "
+        << (released                     ? "done"
+            : springback_failure.empty() ? "not run"
+                                         : "failed")
+        << "\nspringback_failure = " << springback_failure
+        << "\nspringback_wall_time = " << springback_seconds;
+      if (!released)
+        return f.str();
+      const auto &s = *released;
+      f << "\nspringback_iterations = " << s.iterations
+        << "\nspringback_released_force = " << s.released_force
+        << "\nspringback_residual = " << s.residual
+        << "\nspringback_imbalance = " << s.imbalance << "\nspringback_load = "
+        << (forces_current ? "tool forces" : "end stress")
+        << "\nspringback_max_displacement = " << s.max_displacement
+        << "\nspringback_yielded_fraction = " << s.yielded_fraction
+        << "\nspringback_max_trial_ratio = " << s.max_trial_ratio
+        << "\nspringback_max_plastic_strain = " << s.max_plastic_strain
+        << "\nspringback_small_strain_fraction = " << s.small_strain_fraction
+        << "\nspringback_rigid_fraction = " << s.rigid_fraction
+        << "\nspringback_supports = " << s.supports;
+      return f.str();
+    }
+
+    template <int dim>
+    std::vector<std::string> TimeLoop<dim>::springback_warnings() const
+    {
+      std::vector<std::string> w;
+      if (!released)
+        return w;
+      const auto        &s     = *released;
+      const double       limit = prm.springback.unsound_volume_warning;
+      std::ostringstream text;
+      text.precision(3);
+      if (s.small_strain_fraction > limit)
+        text << "springback: " << 100 * s.small_strain_fraction
+             << " % of the volume has less plastic strain than "
+             << prm.springback.sound_strain_ratio
+             << " yield strains; there the rigid-plastic end stress is not "
+                "what an elasto-plastic forming leaves, and its springback "
+                "is not reliable (doc/theory.md, section 12)";
+      if (!text.str().empty())
+        w.push_back(text.str());
+      text.str("");
+      if (s.rigid_fraction > limit)
+        text << "springback: " << 100 * s.rigid_fraction
+             << " % of the volume was rigid in the last step; the flow rule "
+                "leaves its stress undetermined (the residual stress it "
+                "carried out of a radius is lost), so the springback of "
+                "those zones (wall curl) is not reliable (doc/theory.md, "
+                "section 12)";
+      if (!text.str().empty())
+        w.push_back(text.str());
+      text.str("");
+      if (s.yielded_fraction > 0)
+        text << "springback: the release yields again in "
+             << 100 * s.yielded_fraction << " % of the volume (trial "
+             << "equivalent stress up to " << s.max_trial_ratio
+             << " times the yield stress); corrected by the elasto-plastic "
+                "release, plastic strain up to "
+             << s.max_plastic_strain;
+      if (!text.str().empty())
+        w.push_back(text.str());
+      return w;
+    }
+
+#define INSTANTIATE(dim)                                                       \
+  template void                     TimeLoop<dim>::spring_back();              \
+  template std::string              TimeLoop<dim>::springback_summary() const; \
+  template std::vector<std::string> TimeLoop<dim>::springback_warnings() const;
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace simulation
+} // namespace formsolve

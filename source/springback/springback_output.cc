@@ -1,0 +1,68 @@
+#include <deal.II/numerics/data_component_interpretation.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <formsolve/model/current_mapping.h>
+#include <formsolve/model/dimensions.h>
+#include <formsolve/postprocess/atomic_output.h>
+#include <formsolve/springback/springback_output.h>
+
+#include <algorithm>
+
+namespace formsolve
+{
+  namespace springback
+  {
+    using namespace dealii;
+
+    template <int dim>
+    std::string write_sprung_part(const Release<dim>      &release,
+                                  const state::State<dim> &state,
+                                  const std::string       &directory)
+    {
+      const auto        &dh     = release.dof_handler();
+      const unsigned int degree = dh.get_fe().degree;
+      // The sprung mesh: the current configuration plus the displacement.
+      model::CurrentMapping<dim> sprung(
+        std::max(degree, state.mapping->get_degree()));
+      sprung.initialize(*state.mapping, dh, release.owned_displacement(), true);
+
+      DataOut<dim> out;
+      out.attach_dof_handler(dh);
+      out.add_data_vector(
+        release.displacement(),
+        std::vector<std::string>(dim, "springback_displacement"),
+        DataOut<dim>::type_dof_data,
+        std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+          dim,
+          DataComponentInterpretation::component_is_part_of_vector));
+      out.add_data_vector(release.residual_equivalent(),
+                          "residual_equivalent_stress",
+                          DataOut<dim>::type_cell_data);
+      out.add_data_vector(release.residual_mean(),
+                          "residual_mean_stress",
+                          DataOut<dim>::type_cell_data);
+      out.add_data_vector(release.end_equivalent(),
+                          "end_equivalent_stress",
+                          DataOut<dim>::type_cell_data);
+      out.add_data_vector(release.yielded(),
+                          "yielded_again",
+                          DataOut<dim>::type_cell_data);
+      DataOutBase::VtkFlags flags;
+      flags.compression_level = DataOutBase::VtkFlags::best_speed;
+      out.set_flags(flags);
+      out.build_patches(sprung, degree, DataOut<dim>::curved_inner_cells);
+      return postprocess::write_vtu_atomically(out,
+                                               directory,
+                                               "springback",
+                                               state.step,
+                                               state.comm);
+    }
+
+#define INSTANTIATE(dim)                                            \
+  template std::string write_sprung_part(const Release<dim> &,      \
+                                         const state::State<dim> &, \
+                                         const std::string &);
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace springback
+} // namespace formsolve
