@@ -6,9 +6,12 @@
 #include <formsolve/app/error_exit.h>
 #include <formsolve/model/current_mapping.h>
 #include <formsolve/model/dimensions.h>
+#include <formsolve/postprocess/atomic_output.h>
 #include <formsolve/simulation/time_loop.h>
+#include <formsolve/springback/section_profile.h>
 #include <formsolve/springback/springback_output.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace formsolve
@@ -47,6 +50,7 @@ namespace formsolve
                            : nullptr);
           const auto s = release.solve();
           springback::write_sprung_part(release, state, prm.output.directory);
+          measure_section(release);
           released = std::make_unique<springback::ReleaseSummary>(s);
           pcout << "springback: released " << s.released_force
                 << " N of internal force in " << s.iterations
@@ -64,6 +68,50 @@ namespace formsolve
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
           .count();
       pcout << std::flush;
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::measure_section(const springback::Release<dim> &release)
+    {
+      auto profile = springback::section_profile(release, state);
+      if (profile.empty())
+        return;
+      std::sort(profile.begin(),
+                profile.end(),
+                [](const auto &a, const auto &b) { return a.X0 < b.X0; });
+      const auto n = model::coordinate_names(prm.geometry.model);
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        postprocess::write_atomically(prm.output.directory +
+                                        "/springback-profile.csv",
+                                      [&](std::ostream &f) {
+                                        f.precision(10);
+                                        f << n[0] << "0," << n[0] << "_end,"
+                                          << n[1] << "_end," << n[0]
+                                          << "_sprung," << n[1] << "_sprung\n";
+                                        for (const auto &p : profile)
+                                          f << p.X0 << ',' << p.end[0] << ','
+                                            << p.end[1] << ',' << p.sprung[0]
+                                            << ',' << p.sprung[1] << '\n';
+                                      });
+      const auto &t = prm.tools;
+      if (prm.geometry.model != model::Model::plane_strain ||
+          !t.punch.enabled || !t.die.enabled ||
+          t.punch.shape != parameters::ToolShape::round ||
+          t.die.shape != parameters::ToolShape::round)
+        return;
+      const springback::ChannelTools tools{0.5 * t.punch.diameter,
+                                           t.punch.profile_radius,
+                                           0.5 * t.die.diameter,
+                                           t.die.profile_radius};
+      channel = std::make_unique<std::array<springback::ChannelMeasures, 2>>(
+        std::array<springback::ChannelMeasures, 2>{
+          springback::channel_measures(profile, tools, false),
+          springback::channel_measures(profile, tools, true)});
+      const auto &[before, after] = *channel;
+      pcout << "channel: bottom-wall angle " << before.theta1 << " -> "
+            << after.theta1 << " deg, wall-flange angle " << before.theta2
+            << " -> " << after.theta2 << " deg, wall curl radius " << before.rho
+            << " -> " << after.rho << " mm\n";
     }
 
     template <int dim>
@@ -94,6 +142,18 @@ namespace formsolve
         << "\nspringback_small_strain_fraction = " << s.small_strain_fraction
         << "\nspringback_rigid_fraction = " << s.rigid_fraction
         << "\nspringback_supports = " << s.supports;
+      if (channel)
+        {
+          const auto &[before, after] = *channel;
+          f << "\nchannel_theta1_end = " << before.theta1
+            << "\nchannel_theta1 = " << after.theta1
+            << "\nchannel_theta2_end = " << before.theta2
+            << "\nchannel_theta2 = " << after.theta2
+            << "\nchannel_rho_end = " << before.rho
+            << "\nchannel_rho = " << after.rho
+            << "\nchannel_points = " << after.bottom << ' ' << after.wall << ' '
+            << after.flange;
+        }
       return f.str();
     }
 

@@ -25,6 +25,7 @@
 #include <formsolve/postprocess/vtu_writer.h>
 #include <formsolve/refinement/mesh_refinement.h>
 #include <formsolve/simulation/checkpoint.h>
+#include <formsolve/springback/channel_measures.h>
 #include <formsolve/springback/release.h>
 #include <formsolve/state/state.h>
 
@@ -158,6 +159,9 @@ namespace formsolve
       void spring_back();
       /// The springback lines of run-summary.txt ("" without it).
       std::string springback_summary() const;
+      /// The section's profile before and after (springback-profile.csv)
+      /// and, for a plane-strain channel, its angles and curl.
+      void measure_section(const springback::Release<dim> &release);
       /// What the release's end state and result warrant a warning for.
       std::vector<std::string> springback_warnings() const;
       /// After an error past the first step: run-summary.txt, sheet.csv of
@@ -266,8 +270,10 @@ namespace formsolve
       unsigned int             refinement_rows = 0;
       /// The release (Springback/Enabled), once done; why it failed.
       std::unique_ptr<springback::ReleaseSummary> released;
-      std::string                                 springback_failure;
-      double springback_seconds = 0; // its wall time
+      /// A plane-strain channel's angles and curl, before and after.
+      std::unique_ptr<std::array<springback::ChannelMeasures, 2>> channel;
+      std::string springback_failure;
+      double      springback_seconds = 0; // its wall time
       /// The step solver's body forces are those of the current mesh's
       /// last converged step (false after a mesh change without a step).
       bool   forces_current = false;
