@@ -8,9 +8,10 @@ import traceback
 from . import timing
 from .history import IRONING_WINDOW
 from .plots import damage_plot, fld_plot, force_plot, rim_plot, thickness_plot
+from .springback import springback_plot
 
 PICTURES = ("force-travel.png", "thickness-change.png", "thickness.png", "fld.png", "damage.png",
-            "earing.png", "draw-in.png", "penetration.png")
+            "earing.png", "draw-in.png", "penetration.png", "springback.png")
 
 
 def clear_pictures(report):
@@ -56,10 +57,21 @@ def pictures_of(run, args, report, split, at_split, plt, rendering):
     sheet_plots(run, split, at_split, sheet, plt)
     damage_plots(run, split, damage, plt)
     rim_plots(run, rim, plt)
+    springback_plots(run, rim, plt)
     rendered(run, args, split, rendering, part)  # last: the subprocess has run beside the plots
     sections = (force, part, sheet, damage, rim)
     return ([p for s in sections for p in s.pictures], [c for s in sections for c in s.checks],
             [n for s in sections for n in s.notes])
+
+
+def springback_plots(run, section, plt):
+    """The section's springback (Springback/Enabled, 2-D models)."""
+    if run.as_of is not None or not os.path.exists(os.path.join(run.directory, "springback-profile.csv")):
+        return
+    section.add("Springback", "springback.png", "The sheet's mid-surface at the end of forming (grey) and after "
+                "the release (dots, coloured by the springback displacement; held by "
+                f"{run.summary.get('springback_supports', '?')}), and the displacement along the section "
+                "(springback-profile.csv, springback_*.pvtu).", lambda p: springback_plot(run, p, plt))
 
 
 def force_plots(run, split, section, plt):

@@ -12,6 +12,38 @@ namespace formsolve
 {
   namespace parameters
   {
+    namespace
+    {
+      /// "x, y, z" -> numbers, or empty if one is not a number.
+      std::vector<double> coordinates(const std::string &text)
+      {
+        std::vector<double> out;
+        for (const auto &x : dealii::Utilities::split_string_list(text, ','))
+          {
+            char        *end = nullptr;
+            const double v   = std::strtod(x.c_str(), &end);
+            if (end == x.c_str() || *end != '\0' || !std::isfinite(v))
+              return {};
+            out.push_back(v);
+          }
+        return out;
+      }
+    } // namespace
+
+    std::vector<std::vector<double>> parse_points(const std::string &text)
+    {
+      std::vector<std::vector<double>> points;
+      for (const auto &item : dealii::Utilities::split_string_list(text, ';'))
+        if (!item.empty())
+          {
+            points.push_back(coordinates(item));
+            require(!points.back().empty(),
+                    "Springback/Measure points",
+                    "'" + item + "' is not a point 'x, y, z' (or 'x, z')");
+          }
+      return points;
+    }
+
     std::vector<SupportPoint> parse_supports(const std::string &text)
     {
       std::vector<SupportPoint> points;
@@ -24,17 +56,10 @@ namespace formsolve
           bool         ok = colon != std::string::npos;
           if (ok)
             {
-              for (const auto &x :
-                   dealii::Utilities::split_string_list(item.substr(0, colon),
-                                                        ','))
-                {
-                  char *end = nullptr;
-                  s.coordinates.push_back(std::strtod(x.c_str(), &end));
-                  ok = ok && end != x.c_str() && *end == '\0' &&
-                       std::isfinite(s.coordinates.back());
-                }
-              s.components = dealii::Utilities::trim(item.substr(colon + 1));
-              ok           = ok && !s.components.empty() &&
+              s.coordinates = coordinates(item.substr(0, colon));
+              ok            = !s.coordinates.empty();
+              s.components  = dealii::Utilities::trim(item.substr(colon + 1));
+              ok            = ok && !s.components.empty() &&
                    s.components.find_first_not_of("rxyz") == std::string::npos;
             }
           require(ok,
@@ -80,6 +105,16 @@ namespace formsolve
         "planes leave and nothing more (statically determinate, so the "
         "sprung shape does not depend on it).",
         [this](const std::string &t) { supports = parse_supports(t); });
+      d.declare(
+        "Measure points",
+        "",
+        text("points 'x, y, z' separated by ';', or empty"),
+        "Where the springback displacement normal to the part is reported "
+        "(springback-points.csv, run-summary.txt): at the mesh node nearest "
+        "to each point of the formed part ('x, y, z' in 3-D, 'r, z' or "
+        "'x, z' in the sections; mm, end of forming), along the sheet's "
+        "normal there.",
+        [this](const std::string &t) { measure_points = parse_points(t); });
       d.add("Tolerance",
             tolerance,
             number("-", 0, 1),

@@ -8,6 +8,7 @@
 #include <formsolve/model/dimensions.h>
 #include <formsolve/postprocess/atomic_output.h>
 #include <formsolve/simulation/time_loop.h>
+#include <formsolve/springback/measure_points.h>
 #include <formsolve/springback/section_profile.h>
 #include <formsolve/springback/springback_output.h>
 
@@ -51,6 +52,10 @@ namespace formsolve
           const auto s = release.solve();
           springback::write_sprung_part(release, state, prm.output.directory);
           measure_section(release);
+          at_points = springback::springback_at(release,
+                                                state,
+                                                prm.springback.measure_points);
+          write_points();
           released = std::make_unique<springback::ReleaseSummary>(s);
           pcout << "springback: released " << s.released_force
                 << " N of internal force in " << s.iterations
@@ -115,6 +120,33 @@ namespace formsolve
     }
 
     template <int dim>
+    void TimeLoop<dim>::write_points() const
+    {
+      if (at_points.empty() || Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      postprocess::write_atomically(
+        prm.output.directory + "/springback-points.csv",
+        [&](std::ostream &f) {
+          const auto n = model::coordinate_names(prm.geometry.model);
+          f.precision(10);
+          f << "point";
+          for (const std::string what : {"", "normal_", "displacement_"})
+            for (unsigned int d = 0; d < dim; ++d)
+              f << ',' << what << n[d];
+          f << ",normal_displacement\n";
+          for (std::size_t k = 0; k < at_points.size(); ++k)
+            {
+              const auto &p = at_points[k];
+              f << k + 1;
+              for (const auto *v : {&p.node, &p.normal, &p.displacement})
+                for (unsigned int d = 0; d < dim; ++d)
+                  f << ',' << (*v)[d];
+              f << ',' << p.along_normal << '\n';
+            }
+        });
+    }
+
+    template <int dim>
     std::string TimeLoop<dim>::springback_summary() const
     {
       if (!prm.springback.enabled)
@@ -142,6 +174,9 @@ namespace formsolve
         << "\nspringback_small_strain_fraction = " << s.small_strain_fraction
         << "\nspringback_rigid_fraction = " << s.rigid_fraction
         << "\nspringback_supports = " << s.supports;
+      for (std::size_t k = 0; k < at_points.size(); ++k)
+        f << "\nspringback_normal_" << k + 1 << " = "
+          << at_points[k].along_normal;
       if (channel)
         {
           const auto &[before, after] = *channel;
@@ -179,11 +214,12 @@ namespace formsolve
       text.str("");
       if (s.rigid_fraction > limit)
         text << "springback: " << 100 * s.rigid_fraction
-             << " % of the volume was rigid in the last step; the flow rule "
-                "leaves its stress undetermined (the residual stress it "
-                "carried out of a radius is lost), so the springback of "
-                "those zones (wall curl) is not reliable (doc/theory.md, "
-                "section 12)";
+             << " % of the volume was rigid in the last step; there the "
+                "flow rule leaves the stress to equilibrium alone, so the "
+                "residual stresses written there (and whether they yield "
+                "again) are not an elasto-plastic forming's; the sprung "
+                "shape is not affected, it follows from the tools' forces "
+                "(doc/theory.md, section 12)";
       if (!text.str().empty())
         w.push_back(text.str());
       text.str("");

@@ -26,8 +26,11 @@ namespace formsolve
       unsigned int degree  = 0; // of the release's displacement; 0: forming's
       /// Empty: the minimal support (statically determinate).
       std::vector<SupportPoint> supports;
-      double                    tolerance      = 1e-8; // |r| / |f_release|
-      unsigned int              max_iterations = 30;
+      /// Where the springback normal to the part is reported (model's
+      /// coordinates, end of forming, mm).
+      std::vector<std::vector<double>> measure_points;
+      double                           tolerance = 1e-8; // |r| / |f_release|
+      unsigned int                     max_iterations = 30;
       /// The end state is a sound start where the plastic strain exceeds
       /// this many yield strains sigma_y/E (doc/theory.md, section 12).
       double sound_strain_ratio = 10;
@@ -44,6 +47,10 @@ namespace formsolve
     /// supports with the model's number of coordinates and its component
     /// names; throws naming the entry.
     void check_springback(const Run &run);
+
+    /// "x, y, z; x, y, z" -> points; throws naming Springback/Measure
+    /// points.
+    std::vector<std::vector<double>> parse_points(const std::string &text);
 
     /// "x, y, z: xz; ..." -> support points; throws naming
     /// Springback/Supports.

@@ -26,6 +26,7 @@
 #include <formsolve/refinement/mesh_refinement.h>
 #include <formsolve/simulation/checkpoint.h>
 #include <formsolve/springback/channel_measures.h>
+#include <formsolve/springback/measure_points.h>
 #include <formsolve/springback/release.h>
 #include <formsolve/state/state.h>
 
@@ -162,6 +163,8 @@ namespace formsolve
       /// The section's profile before and after (springback-profile.csv)
       /// and, for a plane-strain channel, its angles and curl.
       void measure_section(const springback::Release<dim> &release);
+      /// springback-points.csv (rank 0): Springback/Measure points.
+      void write_points() const;
       /// What the release's end state and result warrant a warning for.
       std::vector<std::string> springback_warnings() const;
       /// After an error past the first step: run-summary.txt, sheet.csv of
@@ -272,6 +275,7 @@ namespace formsolve
       std::unique_ptr<springback::ReleaseSummary> released;
       /// A plane-strain channel's angles and curl, before and after.
       std::unique_ptr<std::array<springback::ChannelMeasures, 2>> channel;
+      std::vector<springback::PointSpringback>                    at_points;
       std::string springback_failure;
       double      springback_seconds = 0; // its wall time
       /// The step solver's body forces are those of the current mesh's
