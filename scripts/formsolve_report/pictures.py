@@ -11,7 +11,7 @@ from .plots import damage_plot, fld_plot, force_plot, rim_plot, thickness_plot
 from .springback import springback_plot
 
 PICTURES = ("force-travel.png", "thickness-change.png", "thickness.png", "fld.png", "damage.png",
-            "earing.png", "draw-in.png", "penetration.png", "springback.png")
+            "earing.png", "draw-in.png", "penetration.png", "springback.png", "springback-part.png")
 
 
 def clear_pictures(report):
@@ -107,6 +107,11 @@ def rendered(run, args, split, rendering, section):
                               "stands for; its end faces show the section" if run.plane_strain else "") +
                              (". The black ball marks the split column."
                               if split and split["R0"] is not None else ".")))
+    if os.path.exists(os.path.join(section.report, "springback-part.png")):
+        section.pictures.append(("The part after springback", "springback-part.png",
+                                 "The part taken out of the tools and released (springback_*.pvtu), coloured "
+                                 "by the springback displacement; held by "
+                                 f"{run.summary.get('springback_supports', '?')}."))
     section.checks.append(("Contact penetration", "penetration.png", "Contact penetration in micrometres (a "
                            "solver check: the allowed penetration is Contact/Allowed penetration)."))
 

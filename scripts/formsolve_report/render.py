@@ -5,6 +5,8 @@ there costs only these pictures. The subprocess is started before the
 matplotlib plots and runs beside them (Rendering): on 2 cores the report
 takes about as long as the longer of the two. vtk (vtkclasses) is imported
 in that subprocess only and handed to the functions."""
+import copy
+import glob
 import importlib.util
 import os
 import shutil
@@ -94,3 +96,29 @@ def render_pictures(args, report):
             ("penetration_um", "contact\npenetration\n(micrometres)", "penetration.png", None)):
         window.draw(field, title, fixed, os.path.join(report, name))
         timing.lap("render", name)
+    springback_picture(run, args, report, vtk)
+
+
+def springback_picture(run, args, report, vtk):
+    """springback-part.png: the sprung part (springback_*.pvtu, Springback/
+    Enabled) coloured by the springback displacement, completed like the
+    part (the section swept, the symmetric model mirrored), without tools."""
+    files = sorted(glob.glob(os.path.join(run.directory, "springback_*.pvtu")))
+    if not files or run.as_of is not None:
+        return
+    from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+    import numpy as np
+    grid = merged(read_vtu(files[-1], ("springback_displacement",)), vtk)
+    u = vtk_to_numpy(grid.GetPointData().GetArray("springback_displacement"))
+    magnitude = numpy_to_vtk(np.linalg.norm(u, axis=1), deep=1)
+    magnitude.SetName("springback_mm")
+    grid.GetPointData().AddArray(magnitude)
+    section = copy.copy(run)
+    section.revolved = None  # the revolved copy is the forming's, not the sprung part
+    scene = (revolved_scene(section, grid, None, None, vtk) if run.axisymmetric
+             else extruded_scene(section, grid, None, None, vtk) if run.plane_strain
+             else mirrored_scene(section, grid, None, None, args.view, vtk))
+    window = PartWindow(scene, ["after the release; view: " + args.view], args.view, run.section, vtk)
+    window.draw("springback_mm", "springback\ndisplacement\n(mm)", None,
+                os.path.join(report, "springback-part.png"))
+    timing.lap("render", "springback-part.png")
