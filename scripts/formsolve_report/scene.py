@@ -189,11 +189,32 @@ def reflected(data, planes, vtk):
     return out
 
 
+def tool_profiles(tools, grid, vtk):
+    """A slice's tools as their profiles across its middle (lines): the
+    straight tools run along y, far beyond the slice, and seen face-on their
+    surfaces would be edges."""
+    lo, hi = grid.GetBounds()[2:4]
+    plane = vtk.vtkPlane()
+    plane.SetOrigin(0.0, 0.5 * (lo + hi), 0.0)
+    plane.SetNormal(0.0, 1.0, 0.0)
+    cut = vtk.vtkCutter()
+    cut.SetInputData(tools)
+    cut.SetCutFunction(plane)
+    cut.Update()
+    return cut.GetOutput()
+
+
 def mirrored_scene(run, grid, tools, split, view, vtk):
     """A 3-D model completed by its symmetry: the whole part; for the
     section view a quarter model as three quarters (x >= 0, y >= 0 left
-    open: the sections at x = 0 and y = 0 show) and a half model alone."""
-    pieces = {"quarter": [[], ["x"], ["y"], ["x", "y"]], "half": [[], ["x"]]}.get(run.model, [[]])
+    open: the sections at x = 0 and y = 0 show) and a half model alone. A
+    slice is mirrored at x = 0 and seen face-on at its face y = 0, with the
+    tools' profiles in that face."""
+    pieces = {"quarter": [[], ["x"], ["y"], ["x", "y"]], "half": [[], ["x"]],
+              "slice": [[], ["x"]]}.get(run.model, [[]])
+    profiles = None
+    if run.model == "slice" and tools is not None:
+        profiles, tools = tool_profiles(tools, grid, vtk), None
     if view == "section" and run.model in ("quarter", "half"):
         pieces = pieces[1:] if run.model == "quarter" else pieces[:1]
 
@@ -216,6 +237,10 @@ def mirrored_scene(run, grid, tools, split, view, vtk):
         scene["azimuth"] = math.degrees(math.atan2(at[1], at[0])) if len(at) == 3 else 0.0
     if view == "section":
         scene["azimuth"] = {"quarter": 45.0, "half": 180.0}.get(run.model, scene["azimuth"])
+    if run.model == "slice":
+        scene["azimuth"] = -90.0  # the face y = 0, the section, towards the camera
+        if profiles is not None and profiles.GetNumberOfCells() > 0:
+            scene["tool_lines"] = polydata(whole(profiles), vtk)
     return scene
 
 

@@ -5,10 +5,11 @@ doc/performance.md, against 0.15 s for these). Used as
 as with VTK's own module; imported only where VTK is used (the --render
 subprocess, a --travel without its sheet CSV)."""
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkLookupTable, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData, vtkUnstructuredGrid
+from vtkmodules.vtkCommonDataModel import vtkBox, vtkCellArray, vtkPlane, vtkPolyData, vtkUnstructuredGrid
 from vtkmodules.vtkCommonTransforms import vtkTransform
-from vtkmodules.vtkFiltersCore import vtkAppendFilter, vtkAppendPolyData, vtkFeatureEdges, vtkPolyDataNormals
-from vtkmodules.vtkFiltersGeneral import vtkReflectionFilter, vtkTransformFilter
+from vtkmodules.vtkFiltersCore import (vtkAppendFilter, vtkAppendPolyData, vtkCutter, vtkFeatureEdges,
+                                       vtkPolyDataNormals)
+from vtkmodules.vtkFiltersGeneral import vtkClipDataSet, vtkReflectionFilter, vtkTransformFilter
 from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter, vtkGeometryFilter
 from vtkmodules.vtkFiltersModeling import vtkLinearExtrusionFilter, vtkRotationalExtrusionFilter
 from vtkmodules.vtkFiltersSources import vtkSphereSource
@@ -22,10 +23,11 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkDataSetMapper, vtkLightKit
 # of the text); without them the window draws nothing.
 from vtkmodules import vtkRenderingFreeType, vtkRenderingOpenGL2
 
-__all__ = ["vtkActor", "vtkAppendFilter", "vtkAppendPolyData", "vtkCellArray", "vtkDataSetMapper",
+__all__ = ["vtkActor", "vtkAppendFilter", "vtkAppendPolyData", "vtkBox", "vtkCellArray", "vtkClipDataSet", "vtkCutter",
+           "vtkDataSetMapper",
            "vtkDataSetSurfaceFilter", "vtkDoubleArray", "vtkFeatureEdges", "vtkGeometryFilter", "vtkLightKit",
            "vtkLinearExtrusionFilter",
-           "vtkLookupTable", "vtkPNGWriter", "vtkPoints", "vtkPolyData", "vtkPolyDataMapper",
+           "vtkLookupTable", "vtkPlane", "vtkPNGWriter", "vtkPoints", "vtkPolyData", "vtkPolyDataMapper",
            "vtkPolyDataNormals", "vtkReflectionFilter", "vtkRenderWindow", "vtkRenderer",
            "vtkRotationalExtrusionFilter", "vtkScalarBarActor", "vtkSphereSource", "vtkTextActor",
            "vtkTransform", "vtkTransformFilter", "vtkUnstructuredGrid", "vtkWindowToImageFilter",
