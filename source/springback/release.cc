@@ -25,19 +25,6 @@ namespace formsolve
       return d > 0 ? d : state.fe.degree;
     }
 
-    namespace
-    {
-      /// B of a shape function as a symmetric tensor.
-      SymmetricTensor<2, 3> tensor(const model::ShapeStrain &b)
-      {
-        SymmetricTensor<2, 3> t;
-        for (unsigned int k = 0; k < 3; ++k)
-          t[b.component][k] += (k == b.component ? 1. : 0.5) * b.gradient[k];
-        t[2][2] += b.hoop;
-        return t;
-      }
-
-    } // namespace
 
     template <int dim>
     Release<dim>::Release(const state::State<dim>           &state,
@@ -119,7 +106,7 @@ namespace formsolve
                 if (with_matrix)
                   {
                     for (unsigned int j = 0; j < n; ++j)
-                      CB[j] = sr.tangent * tensor(B[j]);
+                      CB[j] = sr.tangent * B[j].tensor();
                     for (unsigned int i = 0; i < n; ++i)
                       for (unsigned int j = 0; j < n; ++j)
                         K(i, j) += B[i].contract(CB[j]) * dV;
@@ -190,7 +177,14 @@ namespace formsolve
     template <int dim>
     VectorType Release<dim>::tool_forces(const VectorType &f) const
     {
-      using Cell = typename DoFHandler<dim>::active_cell_iterator;
+      // The same cell on the forming's DoFHandler.
+      const auto forming = [this](const auto &cell) {
+        return
+          typename DoFHandler<dim>::active_cell_iterator(&state.tria,
+                                                         cell->level(),
+                                                         cell->index(),
+                                                         &state.dof_handler);
+      };
       VectorType out(u);
       out                   = 0;
       const unsigned int n1 = state.fe.n_dofs_per_cell(),
@@ -205,11 +199,7 @@ namespace formsolve
           for (const auto &cell : dh.active_cell_iterators())
             if (cell->is_locally_owned())
               {
-                const Cell from(&state.tria,
-                                cell->level(),
-                                cell->index(),
-                                &state.dof_handler);
-                from->get_dof_indices(dofs1);
+                forming(cell)->get_dof_indices(dofs1);
                 cell->get_dof_indices(dofs2);
                 for (unsigned int i = 0; i < n2; ++i)
                   if (owned.is_element(dofs2[i]))
@@ -256,10 +246,7 @@ namespace formsolve
       for (const auto &cell : dh.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            const Cell from(&state.tria,
-                            cell->level(),
-                            cell->index(),
-                            &state.dof_handler);
+            const auto from = forming(cell);
             k1.reinit(from);
             k2.reinit(cell);
             from->get_dof_indices(dofs1);

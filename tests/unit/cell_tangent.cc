@@ -27,16 +27,6 @@ using namespace formsolve;
 
 namespace
 {
-  /// B_i as a symmetric 3x3 tensor.
-  SymmetricTensor<2, 3> tensor(const model::ShapeStrain &b)
-  {
-    SymmetricTensor<2, 3> t;
-    for (unsigned int k = 0; k < 3; ++k)
-      t[b.component][k] += (k == b.component ? 1. : 0.5) * b.gradient[k];
-    t[2][2] += b.hoop;
-    return t;
-  }
-
   /// A fourth-order tensor with both symmetries and no structure.
   SymmetricTensor<4, 3> general_tensor(const unsigned int q)
   {
@@ -71,7 +61,7 @@ namespace
         const SymmetricTensor<4, 3> C = general_tensor(q);
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
-            expected(i, j) += tensor(B[i]) * C * tensor(B[j]);
+            expected(i, j) += B[i].tensor() * C * B[j].tensor();
         tangent.add_general(q, B, C);
       }
     for (unsigned int q = 0; q < kr.n_points(); ++q)

@@ -30,6 +30,16 @@ namespace formsolve
 
       double trace() const { return gradient[component] + hoop; }
 
+      /// B itself.
+      SymmetricTensor<2, 3> tensor() const
+      {
+        SymmetricTensor<2, 3> t;
+        for (unsigned int k = 0; k < 3; ++k)
+          t[component][k] += (k == component ? 1. : 0.5) * gradient[k];
+        t[2][2] += hoop;
+        return t;
+      }
+
       /// S : B for a symmetric S.
       double contract(const SymmetricTensor<2, 3> &S) const
       {
