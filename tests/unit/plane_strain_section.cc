@@ -74,16 +74,7 @@ namespace
 
   parameters::Run section_run(const parameters::Mesh &mesh)
   {
-    parameters::Run prm;
-    prm.geometry.model             = model::Model::plane_strain;
-    prm.geometry.blank_shape       = parameters::BlankShape::rectangle;
-    prm.geometry.blank_length      = L;
-    prm.geometry.blank_width       = W;
-    prm.geometry.thickness         = T;
-    prm.mesh                       = mesh;
-    prm.tools.die.enabled          = false;
-    prm.tools.blank_holder.enabled = false;
-    return prm;
+    return test::plane_strain_strip(L, W, T, mesh);
   }
 
   struct Pulled

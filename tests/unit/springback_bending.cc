@@ -65,15 +65,8 @@ namespace
 
   parameters::Run strip(const double r, const Variant &v)
   {
-    parameters::Run prm;
-    prm.geometry.model                = model::Model::plane_strain;
-    prm.geometry.blank_shape          = parameters::BlankShape::rectangle;
-    prm.geometry.blank_length         = L;
-    prm.geometry.blank_width          = W;
-    prm.geometry.thickness            = T;
-    prm.mesh                          = {v.degree, v.layers, v.refinements};
-    prm.tools.die.enabled             = false;
-    prm.tools.blank_holder.enabled    = false;
+    parameters::Run prm =
+      test::plane_strain_strip(L, W, T, {v.degree, v.layers, v.refinements});
     prm.material.strength_coefficient = sigma0;
     prm.material.hardening_exponent   = 0;
     prm.material.limiting_strain_rate = 1e-7;
@@ -176,6 +169,19 @@ namespace
     const solver::Assembler<2>        assembler;
     const state::HistoryUpdate<2>     update;
     std::unique_ptr<Bent>             problem;
+
+    /// The release of the end state, with the reactions of the prescribed
+    /// end as the tools' forces.
+    std::unique_ptr<springback::Release<2>> release() const
+    {
+      forces = problem->unconstrained_residual();
+      return std::make_unique<springback::Release<2>>(state,
+                                                      *state.mapping,
+                                                      material,
+                                                      law,
+                                                      &forces);
+    }
+    mutable springback::VectorType forces;
   };
 
   /// Whether any cell away from the loaded end (x < L/2 - 3 T) yielded
@@ -223,15 +229,11 @@ int main(int argc, char **argv)
   for (const auto &v : variants)
     for (const double r : {1., 1.77})
       {
-        Bending                b(strip(r, v));
-        const auto             forces = b.problem->unconstrained_residual();
-        springback::Release<2> release(b.state,
-                                       *b.state.mapping,
-                                       b.material,
-                                       b.law,
-                                       &forces);
-        const auto             s = release.solve();
-        const double           kappa =
+        Bending      b(strip(r, v));
+        const auto   made    = b.release();
+        const auto  &release = *made;
+        const auto   s       = made->solve();
+        const double kappa =
           curvature(mid_plane(release, b.state), b.state.comm);
         const double      s1    = (1 + r) / std::sqrt(1 + 2 * r) * sigma0;
         const double      exact = 3 * s1 * (1 - nu * nu) / (E * T);
@@ -259,15 +261,11 @@ int main(int argc, char **argv)
           test::close(what + "curvature as on 1 rank", kappa / ref, 1, 1e-9);
         // Another support: the same shape up to a translation along z.
         b.prm.springback.supports = parameters::parse_supports("5, 1: z");
-        springback::Release<2> other(b.state,
-                                     *b.state.mapping,
-                                     b.material,
-                                     b.law,
-                                     &forces);
-        other.solve();
+        const auto other          = b.release();
+        other->solve();
         test::close(what + "independent of the support (up to z)",
                     shape_difference(mid_plane(release, b.state),
-                                     mid_plane(other, b.state)),
+                                     mid_plane(*other, b.state)),
                     0,
                     1e-9);
       }
@@ -277,13 +275,9 @@ int main(int argc, char **argv)
     Bending b(strip(1, variants[0]));
     b.state.velocity = 0;
     b.end_state();
-    const auto             forces = b.problem->unconstrained_residual();
-    springback::Release<2> release(b.state,
-                                   *b.state.mapping,
-                                   b.material,
-                                   b.law,
-                                   &forces);
-    const auto             s = release.solve();
+    const auto  made    = b.release();
+    const auto &release = *made;
+    const auto  s       = made->solve();
     test::close("stress-free: no displacement",
                 release.owned_displacement().linfty_norm(),
                 0,

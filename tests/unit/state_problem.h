@@ -56,6 +56,26 @@ namespace test
     return {dealii::SymmetricTensor<2, 3>(), 0.};
   }
 
+  /// A plane-strain strip L x T of width W with no tools: the section
+  /// x >= 0 of it on @p mesh.
+  inline formsolve::parameters::Run
+  plane_strain_strip(const double                       L,
+                     const double                       W,
+                     const double                       T,
+                     const formsolve::parameters::Mesh &mesh)
+  {
+    formsolve::parameters::Run prm;
+    prm.geometry.model        = formsolve::model::Model::plane_strain;
+    prm.geometry.blank_shape  = formsolve::parameters::BlankShape::rectangle;
+    prm.geometry.blank_length = L;
+    prm.geometry.blank_width  = W;
+    prm.geometry.thickness    = T;
+    prm.mesh                  = mesh;
+    prm.tools.die.enabled     = false;
+    prm.tools.blank_holder.enabled = false;
+    return prm;
+  }
+
   template <int dim = 3>
   class StateProblem : public ToyProblem
   {
