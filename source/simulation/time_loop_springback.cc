@@ -217,9 +217,9 @@ namespace formsolve
              << " % of the volume was rigid in the last step; there the "
                 "flow rule leaves the stress to equilibrium alone, so the "
                 "residual stresses written there (and whether they yield "
-                "again) are not an elasto-plastic forming's; the sprung "
-                "shape is not affected, it follows from the tools' forces "
-                "(doc/theory.md, section 12)";
+                "again) are not an elasto-plastic forming's; where nothing "
+                "yields again the sprung shape does not depend on them, it "
+                "follows from the tools' forces (doc/theory.md, section 12)";
       if (!text.str().empty())
         w.push_back(text.str());
       text.str("");
