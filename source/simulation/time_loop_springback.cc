@@ -13,6 +13,7 @@
 #include <formsolve/springback/springback_output.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace formsolve
@@ -113,10 +114,15 @@ namespace formsolve
           springback::channel_measures(profile, tools, false),
           springback::channel_measures(profile, tools, true)});
       const auto &[before, after] = *channel;
-      pcout << "channel: bottom-wall angle " << before.theta1 << " -> "
-            << after.theta1 << " deg, wall-flange angle " << before.theta2
-            << " -> " << after.theta2 << " deg, wall curl radius " << before.rho
-            << " -> " << after.rho << " mm\n";
+      if (std::isnan(after.theta1))
+        pcout << "channel: no angles: bottom, wall and flange have "
+              << after.bottom << ", " << after.wall << " and " << after.flange
+              << " mid-surface nodes, fewer than 3 in one (a short draw)\n";
+      else
+        pcout << "channel: bottom-wall angle " << before.theta1 << " -> "
+              << after.theta1 << " deg, wall-flange angle " << before.theta2
+              << " -> " << after.theta2 << " deg, wall curl radius "
+              << before.rho << " -> " << after.rho << " mm\n";
     }
 
     template <int dim>
