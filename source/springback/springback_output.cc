@@ -1,3 +1,4 @@
+#include <deal.II/fe/fe_tools.h>
 #include <deal.II/numerics/data_component_interpretation.h>
 #include <deal.II/numerics/data_out.h>
 
@@ -21,10 +22,18 @@ namespace formsolve
     {
       const auto        &dh     = release.dof_handler();
       const unsigned int degree = dh.get_fe().degree;
-      // The sprung mesh: the current configuration plus the displacement.
+      // The sprung mesh: the reference mapping plus the forming's
+      // displacement (carried to the release's element) plus the
+      // release's. (A cache on top of the current mapping, itself a cache,
+      // would be asked for the support points of inactive cells.)
+      VectorType forming(state.owned, state.relevant, state.comm);
+      forming = state.displacement;
+      VectorType total(release.owned_displacement());
+      FETools::interpolate(state.dof_handler, forming, dh, total);
+      total += release.owned_displacement();
       model::CurrentMapping<dim> sprung(
         std::max(degree, state.mapping->get_degree()));
-      sprung.initialize(*state.mapping, dh, release.owned_displacement(), true);
+      sprung.initialize(state.reference_mapping, dh, total, true);
 
       DataOut<dim> out;
       out.attach_dof_handler(dh);
