@@ -19,6 +19,7 @@ LAYERS = [
     ["newton", "linear"],  # Newton on a NonlinearProblem; linear solves
     ["forming", "refinement"],  # the forming operators and step; adaptation
     ["postprocess"],  # measures, history.csv, VTU
+    ["trimming"],  # the cut of the formed part
     ["springback"],  # the release of the formed part
     ["simulation"],  # the time loop
 ]

@@ -268,6 +268,14 @@ namespace formsolve
             poisson_ratio,
             number("-", 0, 0.4999),
             "nu (-), for springback only (with Young's modulus).");
+      d.declare("Density",
+                "",
+                text("a number > 0 (kg/m^3), or empty: not given"),
+                "rho (kg/m^3), for the mass of a trimmed part only (the "
+                "forming is quasi-static). Empty: not given.",
+                [this](const std::string &t) {
+                  density = optional_number(t, "Material/Density");
+                });
       anisotropy.declare(d);
       declare_fracture(d);
     }
@@ -303,6 +311,9 @@ namespace formsolve
                        "Material/Limiting strain rate",
                        "1/s");
       require_positive(volumetric_penalty, "Material/Volumetric penalty", "");
+      require(std::isnan(density) || density > 0,
+              "Material/Density",
+              "must be positive, got " + str(density));
       require(std::isnan(young_modulus) || young_modulus > 0,
               "Material/Young's modulus",
               "must be positive, got " + str(young_modulus));

@@ -28,6 +28,7 @@ namespace formsolve
       nonlinear.declare(d);
       linear.declare(d);
       split.declare(d);
+      trimming.declare(d);
       springback.declare(d);
       output.declare(d);
     }
@@ -264,6 +265,7 @@ namespace formsolve
       nonlinear.validate();
       linear.validate();
       split.validate();
+      trimming.validate();
       springback.validate();
       output.validate();
 
@@ -293,6 +295,7 @@ namespace formsolve
               "'draw-through' needs an enabled die with an opening (Shape "
               "round or rounded rectangle)");
       check_outlines(*this);
+      check_trimming(*this);
       check_springback(*this);
       check_memory(*this);
     }

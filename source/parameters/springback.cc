@@ -115,6 +115,14 @@ namespace formsolve
         "'x, z' in the sections; mm, end of forming), along the sheet's "
         "normal there.",
         [this](const std::string &t) { measure_points = parse_points(t); });
+      d.add("Slit",
+            slit,
+            "The split-ring test (Demeri): the part, a ring trimmed from a "
+            "cup's wall (Trimming/Planes), is slit along its generator at +y "
+            "before it springs back: the symmetry plane x = 0 of "
+            "Geometry/Model = half holds it only where y < 0. The ring's "
+            "opening (twice the slit face's displacement along x) goes to "
+            "run-summary.txt.");
       d.add("Tolerance",
             tolerance,
             number("-", 0, 1),
@@ -156,6 +164,15 @@ namespace formsolve
               "Material/Young's modulus",
               "must be given for springback (Springback/Enabled = true): "
               "the release is elastic");
+      require(!sb.slit || run.geometry.model == model::Model::half,
+              "Springback/Slit",
+              "the slit lies in the symmetry plane x = 0 of Geometry/Model = "
+              "half, not of " +
+                model::name(run.geometry.model));
+      require(!sb.slit || run.trimming.any(),
+              "Springback/Slit",
+              "slits a ring trimmed from the part: give Trimming/Planes "
+              "(e.g. 'z > 8; z < 20')");
       const auto  names = model::coordinate_names(run.geometry.model);
       std::string letters;
       for (const auto &n : names)

@@ -158,6 +158,30 @@ namespace formsolve
     } // namespace
 
     template <int dim>
+    void select_cells(
+      DataOut<dim> &out,
+      const std::function<
+        bool(const typename Triangulation<dim>::active_cell_iterator &)> &part)
+    {
+      using Cell   = typename Triangulation<dim>::cell_iterator;
+      using Active = typename Triangulation<dim>::active_cell_iterator;
+      // The first selected cell from @p it on, or the end.
+      const auto from = [part](const Triangulation<dim> &tria, Active it) {
+        while (it != tria.end() && !(it->is_locally_owned() && part(it)))
+          ++it;
+        return it == tria.end() ? tria.end() : Cell(it);
+      };
+      out.set_cell_selection(
+        [from](const Triangulation<dim> &tria) {
+          return from(tria, tria.begin_active());
+        },
+        [from](const Triangulation<dim> &tria, const Cell &cell) {
+          Active next(cell);
+          return from(tria, ++next);
+        });
+    }
+
+    template <int dim>
     VtuWriter<dim>::VtuWriter(const parameters::Output &p)
         : prm(p)
     {}
@@ -224,7 +248,39 @@ namespace formsolve
           }
     }
 
-#define INSTANTIATE(dim) template class VtuWriter<dim>;
+    template <int dim>
+    std::string VtuWriter<dim>::write_part(
+      const unsigned int       step,
+      const DoFHandler<dim>   &dof_handler,
+      const Mapping<dim>      &mapping,
+      const OutputFields<dim> &fields,
+      const std::function<
+        bool(const typename Triangulation<dim>::active_cell_iterator &)> &part,
+      const std::string &base) const
+    {
+      DataOut<dim>                                 out;
+      std::vector<Vector<float>>                   cell_data;
+      std::vector<std::unique_ptr<Component<dim>>> scalars;
+      std::vector<std::unique_ptr<FrameAxis<dim>>> axes;
+      add_fields(out, dof_handler, fields, cell_data, scalars, axes);
+      select_cells(out, part);
+      out.set_flags(fast());
+      out.build_patches(mapping,
+                        dof_handler.get_fe().degree,
+                        DataOut<dim>::curved_inner_cells);
+      return write_vtu_atomically(out,
+                                  prm.directory,
+                                  base,
+                                  step,
+                                  dof_handler.get_communicator());
+    }
+
+#define INSTANTIATE(dim)                                                   \
+  template class VtuWriter<dim>;                                           \
+  template void select_cells(                                              \
+    DataOut<dim> &,                                                        \
+    const std::function<bool(                                              \
+      const typename Triangulation<dim>::active_cell_iterator &)> &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace postprocess

@@ -238,8 +238,6 @@ namespace formsolve
       save_checkpoint(summary);
 
       summary.wall_time = seconds();
-      if (prm.springback.enabled && !summary.solver_failed)
-        spring_back();
       sheet.measure(state, damage);
       sheet.write_csv(comm, prm.output.directory);
       // Ears are the rim of a drawn cup: before draw-through the rim is
@@ -254,6 +252,13 @@ namespace formsolve
               prm.material.anisotropy.rolling_direction);
             postprocess::write_earing(earing, prm.output.directory);
           }
+      // The part after forming: the forming's results above are the
+      // untrimmed part's, on its mesh.
+      if (prm.trimming.any() && !summary.solver_failed)
+        trim();
+      if (prm.springback.enabled && !summary.solver_failed &&
+          trim_failure.empty())
+        spring_back();
       measure_memory(summary);
       write_summary(summary);
       pcout << "done: " << state.step << " steps, " << summary.newton_iterations

@@ -225,7 +225,7 @@ namespace formsolve
       for (unsigned int z = 0; z < material::n_safety_zones; ++z)
         f << "\ncolumns_" << material::zone_key(material::SafetyZone(z))
           << " = " << sh.zone_count[z];
-      f << split_summary() << springback_summary();
+      f << split_summary() << trimming_summary() << springback_summary();
       if (!earing.angle.empty())
         {
           f << "\ncup_height_mean = " << earing.mean

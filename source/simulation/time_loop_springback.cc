@@ -34,22 +34,18 @@ namespace formsolve
           // (its start): the stress there is the one the tools balanced,
           // while on the current mesh the last velocity no longer matches
           // elements that turned during the step (around a die radius).
-          VectorType start(state.displacement);
-          start.add(-last_dt, state.velocity);
-          model::CurrentMapping<dim> configuration(prm.mesh.degree);
-          configuration.initialize(state.reference_mapping,
-                                   state.dof_handler,
-                                   start,
-                                   true);
+          const auto configuration = start_configuration();
           // The forces the tools balanced at the last converged step, unless
-          // the mesh changed since.
+          // the mesh changed since; a trimmed part releases its own end
+          // stress.
           springback::Release<dim> release(
             state,
-            configuration,
+            *configuration,
             material,
             law,
-            forces_current ? &step_solver.forming_system().body_forces()
-                           : nullptr);
+            forces_current ? &step_solver.forming_system().body_forces() :
+                             nullptr,
+            kept.get());
           const auto s = release.solve();
           springback::write_sprung_part(release, state, prm.output.directory);
           measure_section(release);
@@ -57,6 +53,9 @@ namespace formsolve
                                                 state,
                                                 prm.springback.measure_points);
           write_points();
+          if (prm.springback.slit)
+            opening = std::make_unique<springback::RingOpening>(
+              springback::ring_opening(release, *configuration));
           released = std::make_unique<springback::ReleaseSummary>(s);
           pcout << "springback: released " << s.released_force
                 << " N of internal force in " << s.iterations
@@ -64,6 +63,10 @@ namespace formsolve
                 << s.max_displacement << " mm; yields again in "
                 << 100 * s.yielded_fraction << " % of the volume; held "
                 << s.supports << "\n";
+          if (opening)
+            pcout << "split ring: opening " << opening->mean << " mm (from "
+                  << opening->low << " to " << opening->high
+                  << " mm over the slit's " << opening->nodes << " nodes)\n";
         }
       catch (const std::exception &e)
         {
@@ -172,7 +175,9 @@ namespace formsolve
         << "\nspringback_released_force = " << s.released_force
         << "\nspringback_residual = " << s.residual
         << "\nspringback_imbalance = " << s.imbalance << "\nspringback_load = "
-        << (forces_current ? "tool forces" : "end stress")
+        << (kept             ? "end stress of the trimmed part" :
+            forces_current ? "tool forces" :
+                             "end stress")
         << "\nspringback_max_displacement = " << s.max_displacement
         << "\nspringback_yielded_fraction = " << s.yielded_fraction
         << "\nspringback_max_trial_ratio = " << s.max_trial_ratio
@@ -183,6 +188,11 @@ namespace formsolve
       for (std::size_t k = 0; k < at_points.size(); ++k)
         f << "\nspringback_normal_" << k + 1 << " = "
           << at_points[k].along_normal;
+      if (opening)
+        f << "\nring_opening = " << opening->mean
+          << "\nring_opening_min = " << opening->low
+          << "\nring_opening_max = " << opening->high
+          << "\nring_slit_nodes = " << opening->nodes;
       if (channel)
         {
           const auto &[before, after] = *channel;

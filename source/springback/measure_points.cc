@@ -33,7 +33,7 @@ namespace formsolve
           typename DoFHandler<dim>::active_cell_iterator at;
           unsigned int                                   node = 0;
           for (const auto &cell : dh.active_cell_iterators())
-            if (cell->is_locally_owned())
+            if (cell->is_locally_owned() && release.in_part(cell))
               for (unsigned int i = 0; i < unit.size(); ++i)
                 {
                   const double d =

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
@@ -26,19 +27,38 @@ namespace formsolve
     }
 
 
+    namespace
+    {
+      /// Whether @p kept leaves out any cell (all ranks).
+      template <int dim>
+      bool trims(const state::State<dim> &state, const trimming::KeptCells *kept)
+      {
+        bool cut = false;
+        if (kept)
+          for (const auto &cell : state.tria.active_cell_iterators())
+            if (cell->is_locally_owned() && !(*kept)[cell->active_cell_index()])
+              cut = true;
+        return Utilities::MPI::logical_or(cut, state.comm);
+      }
+    } // namespace
+
     template <int dim>
     Release<dim>::Release(const state::State<dim>           &state,
                           const Mapping<dim>                &configuration,
                           const material::RigidViscoplastic &material,
                           const material::ReleaseLaw        &law,
-                          const VectorType                  *end_forces)
+                          const VectorType                  *end_forces,
+                          const trimming::KeptCells         *kept)
         : state(state)
         , mapping(configuration)
         , law(law)
         , prm(state.prm)
         , fe(FE_Q<dim>(release_degree(state)), dim)
+        , part_fe(fe, FESystem<dim>(FE_Nothing<dim>(), dim))
         , quadrature(release_degree(state) + 1)
         , dh(state.tria)
+        , part(state.tria)
+        , kept(trims(state, kept) ? kept : nullptr)
         , end(state, configuration, material, law, quadrature)
         , end_forces(end_forces)
     {
@@ -49,13 +69,20 @@ namespace formsolve
     void Release<dim>::setup()
     {
       dh.distribute_dofs(fe);
-      const IndexSet owned = dh.locally_owned_dofs();
+      for (const auto &cell : part.active_cell_iterators())
+        if (cell->is_locally_owned())
+          cell->set_active_fe_index(in_part(cell) ? 0 : 1);
+      part.distribute_dofs(part_fe);
+      const IndexSet owned = part.locally_owned_dofs();
       IndexSet       relevant;
-      DoFTools::extract_locally_relevant_dofs(dh, relevant);
-      supports = hold(state, mapping, dh, constraints);
-
+      DoFTools::extract_locally_relevant_dofs(part, relevant);
+      supports = hold(state,
+                      mapping,
+                      part,
+                      constraints,
+                      prm.springback.slit);
       DynamicSparsityPattern dsp(relevant);
-      DoFTools::make_sparsity_pattern(dh, dsp, constraints, false);
+      DoFTools::make_sparsity_pattern(part, dsp, constraints, false);
       SparsityTools::distribute_sparsity_pattern(dsp,
                                                  owned,
                                                  state.comm,
@@ -64,7 +91,11 @@ namespace formsolve
       u.reinit(owned, state.comm);
       residual.reinit(owned, state.comm);
       defect.reinit(owned, state.comm);
-      u_ghost.reinit(owned, relevant, state.comm);
+      part_ghost.reinit(owned, relevant, state.comm);
+      IndexSet all_relevant;
+      DoFTools::extract_locally_relevant_dofs(dh, all_relevant);
+      u_full.reinit(dh.locally_owned_dofs(), state.comm);
+      u_ghost.reinit(dh.locally_owned_dofs(), all_relevant, state.comm);
       for (auto *v : {&cell_residual, &cell_end, &cell_mean, &cell_yielded})
         v->reinit(state.tria.n_active_cells());
     }
@@ -84,11 +115,11 @@ namespace formsolve
         matrix = 0;
       residual       = 0;
       double yielded = 0, volume = 0, max_ratio = 0, max_plastic = 0;
-      for (const auto &cell : dh.active_cell_iterators())
-        if (cell->is_locally_owned())
+      for (const auto &cell : part.active_cell_iterators())
+        if (cell->is_locally_owned() && cell->active_fe_index() == 0)
           {
             k.reinit(cell);
-            k.rates(u_ghost, eps);
+            k.rates(part_ghost, eps);
             const auto &points = end.at(cell);
             K                  = 0;
             r                  = 0;
@@ -154,7 +185,7 @@ namespace formsolve
       const double cutoff = 10 * prm.material.limiting_strain_rate;
       double       small = 0, rigid = 0;
       for (const auto &cell : dh.active_cell_iterators())
-        if (cell->is_locally_owned())
+        if (cell->is_locally_owned() && in_part(cell))
           {
             k.reinit(cell);
             const auto &points = end.at(cell);
@@ -175,113 +206,48 @@ namespace formsolve
     }
 
     template <int dim>
-    VectorType Release<dim>::tool_forces(const VectorType &f) const
+    void Release<dim>::spread_displacement()
     {
-      // The same cell on the forming's DoFHandler.
-      const auto forming = [this](const auto &cell) {
-        return
-          typename DoFHandler<dim>::active_cell_iterator(&state.tria,
-                                                         cell->level(),
-                                                         cell->index(),
-                                                         &state.dof_handler);
-      };
-      VectorType out(u);
-      out                   = 0;
-      const unsigned int n1 = state.fe.n_dofs_per_cell(),
-                         n2 = fe.n_dofs_per_cell();
-      std::vector<types::global_dof_index> dofs1(n1), dofs2(n2);
-      VectorType f1(state.owned, state.relevant, state.comm);
-      f1 = f;
-      if (state.fe.degree == fe.degree)
-        {
-          // The same element: the same local DoFs.
-          const auto owned = dh.locally_owned_dofs();
-          for (const auto &cell : dh.active_cell_iterators())
-            if (cell->is_locally_owned())
-              {
-                forming(cell)->get_dof_indices(dofs1);
-                cell->get_dof_indices(dofs2);
-                for (unsigned int i = 0; i < n2; ++i)
-                  if (owned.is_element(dofs2[i]))
-                    out[dofs2[i]] = f1[dofs1[i]];
-              }
-          out.compress(VectorOperation::insert);
-          constraints.set_zero(out);
-          return out;
-        }
-      // Otherwise the forces become a density t = f / m (m: the forming
-      // element's lumped volume per DoF) whose work against the release's
-      // shape functions is the load: the resultant is kept, and no force
-      // is a point load on the release's finer element (eq. 12c).
-      model::CellKinematics<dim> k1(state.kinematics,
-                                    mapping,
-                                    state.fe,
-                                    quadrature,
-                                    update_values);
-      model::CellKinematics<dim> k2(state.kinematics,
-                                    mapping,
-                                    fe,
-                                    quadrature,
-                                    update_values);
-      VectorType                 mass(state.owned, state.comm);
-      for (const auto &cell : state.dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
+      part_ghost = u;
+      const unsigned int                   n     = fe.n_dofs_per_cell();
+      const IndexSet                       owned = dh.locally_owned_dofs();
+      std::vector<types::global_dof_index> mine(n), dofs(n);
+      u_full = 0;
+      for (const auto &cell : part.active_cell_iterators())
+        if (!cell->is_artificial() && cell->active_fe_index() == 0)
           {
-            k1.reinit(cell);
-            cell->get_dof_indices(dofs1);
-            Vector<double> m(n1);
-            for (unsigned int q = 0; q < k1.n_points(); ++q)
-              for (unsigned int i = 0; i < n1; ++i)
-                m(i) += k1.fe_values().shape_value(i, q) * k1.dV(q);
-            state.constraints.distribute_local_to_global(m, dofs1, mass);
+            cell->get_dof_indices(mine);
+            typename DoFHandler<dim>::active_cell_iterator(&state.tria,
+                                                           cell->level(),
+                                                           cell->index(),
+                                                           &dh)
+              ->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < n; ++i)
+              if (owned.is_element(dofs[i]))
+                u_full[dofs[i]] = part_ghost[mine[i]];
           }
-      mass.compress(VectorOperation::add);
-      VectorType density(state.owned, state.comm);
-      for (const auto i : state.owned)
-        density[i] = mass[i] > 0 ? f[i] / mass[i] : 0.;
-      density.compress(VectorOperation::insert);
-      state.constraints.distribute(density);
-      f1 = density;
-      Vector<double> r(n2);
-      for (const auto &cell : dh.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            const auto from = forming(cell);
-            k1.reinit(from);
-            k2.reinit(cell);
-            from->get_dof_indices(dofs1);
-            cell->get_dof_indices(dofs2);
-            r = 0;
-            for (unsigned int q = 0; q < k2.n_points(); ++q)
-              {
-                Tensor<1, dim> t;
-                for (unsigned int i = 0; i < n1; ++i)
-                  t[state.fe.system_to_component_index(i).first] +=
-                    f1[dofs1[i]] * k1.fe_values().shape_value(i, q);
-                for (unsigned int j = 0; j < n2; ++j)
-                  r(j) += t[fe.system_to_component_index(j).first] *
-                          k2.fe_values().shape_value(j, q) * k2.dV(q);
-              }
-            constraints.distribute_local_to_global(r, dofs2, out);
-          }
-      out.compress(VectorOperation::add);
-      return out;
+      u_full.compress(VectorOperation::insert);
+      u_ghost = u_full;
     }
 
     template <int dim>
     ReleaseSummary Release<dim>::solve()
     {
       ReleaseSummary s;
-      s.supports         = describe_supports(supports, prm.geometry.model);
-      u                  = 0;
-      u_ghost            = u;
-      defect             = 0;
+      s.supports = describe_supports(supports, prm.geometry.model);
+      u          = 0;
+      part_ghost = u;
+      defect = 0;
       const double whole = assemble(true, s);
-      if (end_forces)
+      // A trimmed part's load is its own end stress (eq. 13a).
+      if (end_forces && !trimmed())
         {
-          // g = int B^T sigma_end dV - the tools' forces; r(0) = those.
+          // g: the end stress's own imbalance in the release's space, no
+          // load (eq. 12c): r(0) = the tools' forces.
+          const VectorType f = load_on(part, constraints, state, mapping,
+                                       *end_forces);
           defect = residual;
-          defect -= tool_forces(*end_forces);
+          defect -= f;
           s.imbalance = whole > 0 ? defect.l2_norm() / whole : 0;
           residual -= defect;
         }
@@ -306,12 +272,13 @@ namespace formsolve
           linear->solve(matrix, du, rhs, false);
           constraints.distribute(du);
           u += du;
-          u_ghost = u;
+          part_ghost = u;
           ++s.iterations;
           norm = assemble(false, s);
         }
       s.residual         = s.released_force > 0 ? norm / s.released_force : 0;
       s.max_displacement = u.linfty_norm();
+      spread_displacement();
       return s;
     }
 

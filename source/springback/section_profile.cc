@@ -40,7 +40,7 @@ namespace formsolve
           std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
           std::map<types::global_dof_index, types::global_dof_index> z_of;
           for (const auto &cell : dh.active_cell_iterators())
-            if (cell->is_locally_owned())
+            if (cell->is_locally_owned() && release.in_part(cell))
               {
                 cell->get_dof_indices(dofs);
                 for (unsigned int i = 0; i < dofs.size(); ++i)

@@ -1,10 +1,13 @@
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_tools.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/numerics/data_component_interpretation.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <formsolve/model/current_mapping.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/postprocess/atomic_output.h>
+#include <formsolve/postprocess/vtu_writer.h>
 #include <formsolve/springback/springback_output.h>
 
 #include <algorithm>
@@ -29,7 +32,13 @@ namespace formsolve
       VectorType forming(state.owned, state.relevant, state.comm);
       forming = state.displacement;
       VectorType total(release.owned_displacement());
-      FETools::interpolate(state.dof_handler, forming, dh, total);
+      // With hanging nodes the interpolation needs the target's constraints.
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(dh, relevant);
+      AffineConstraints<double> hanging(relevant);
+      DoFTools::make_hanging_node_constraints(dh, hanging);
+      hanging.close();
+      FETools::interpolate(state.dof_handler, forming, dh, hanging, total);
       total += release.owned_displacement();
       model::CurrentMapping<dim> sprung(
         std::max(degree, state.mapping->get_degree()));
@@ -59,6 +68,9 @@ namespace formsolve
       DataOutBase::VtkFlags flags;
       flags.compression_level = DataOutBase::VtkFlags::best_speed;
       out.set_flags(flags);
+      postprocess::select_cells<dim>(out, [&release](const auto &cell) {
+        return release.in_part(cell);
+      });
       out.build_patches(sprung, degree, DataOut<dim>::curved_inner_cells);
       return postprocess::write_vtu_atomically(out,
                                                directory,

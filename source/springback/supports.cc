@@ -44,7 +44,8 @@ namespace formsolve
         std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
         std::vector<NodeDof<dim>>            out;
         for (const auto &cell : dh.active_cell_iterators())
-          if (cell->is_locally_owned() || cell->is_ghost())
+          if ((cell->is_locally_owned() || cell->is_ghost()) &&
+              cell->get_fe().n_dofs_per_cell() > 0) // not cut away
             {
               cell->get_dof_indices(dofs);
               for (unsigned int i = 0; i < dofs.size(); ++i)
@@ -281,6 +282,47 @@ namespace formsolve
       }
     } // namespace
 
+    namespace
+    {
+    template <int dim>
+    std::vector<Support<dim>> slit_supports(const DoFHandler<dim> &dh,
+                                            const Mapping<dim>    &mapping)
+    {
+      // The slit ring keeps the plane x = 0 for y < 0; left are the
+      // translations along y and z and the rotation about x: y and z held
+      // opposite the slit, z at the slit (none of them moves the slit
+      // along x, so the opening does not depend on them).
+      const auto     nodes = node_dofs(dh, mapping);
+      const MPI_Comm comm  = dh.get_communicator();
+      const auto     by_y  = [](const double sign) {
+        return [sign](const Point<dim> &x) { return sign * x[1] - 1e-6 * x[dim - 1]; };
+      };
+      return {{best_node(nodes, by_y(1), comm), "yz"},
+              {best_node(nodes, by_y(-1), comm), "z"}};
+    }
+
+    template <int dim>
+    void add_slit_symmetry(const state::State<dim>   &state,
+                           const Mapping<dim>        &mapping,
+                           const DoFHandler<dim>     &dh,
+                           AffineConstraints<double> &constraints)
+    {
+      AffineConstraints<double> symmetry(constraints.get_local_lines());
+      state::add_model_constraints(state.prm.geometry.model,
+                                   state.reference_mapping,
+                                   dh,
+                                   symmetry);
+      std::map<types::global_dof_index, double> y;
+      for (const auto &n : node_dofs(dh, mapping))
+        y[n.index] = n.x[dim == 3 ? 1 : 0];
+      for (const auto &line : symmetry.get_lines())
+        if (y.count(line.index) && y[line.index] <= 0 &&
+            constraints.can_store_line(line.index) &&
+            !constraints.is_constrained(line.index))
+          constraints.add_line(line.index);
+    }
+    } // namespace
+
     template <int dim>
     std::string describe_supports(const std::vector<Support<dim>> &s,
                                   const model::Model               m)
@@ -292,7 +334,8 @@ namespace formsolve
     std::vector<Support<dim>> hold(const state::State<dim>   &state,
                                    const Mapping<dim>        &mapping,
                                    const DoFHandler<dim>     &dh,
-                                   AffineConstraints<double> &constraints)
+                                   AffineConstraints<double> &constraints,
+                                   const bool                 slit)
     {
       const auto m = state.prm.geometry.model;
       IndexSet   relevant;
@@ -300,9 +343,17 @@ namespace formsolve
       constraints.clear();
       constraints.reinit(relevant);
       DoFTools::make_hanging_node_constraints(dh, constraints);
-      state::add_model_constraints(m, state.reference_mapping, dh, constraints);
+      if (slit)
+        add_slit_symmetry(state, mapping, dh, constraints);
+      else
+        state::add_model_constraints(m,
+                                     state.reference_mapping,
+                                     dh,
+                                     constraints);
       const auto supports =
-        choose_supports(dh, mapping, m, state.prm.springback.supports);
+        slit && state.prm.springback.supports.empty() ?
+          slit_supports(dh, mapping) :
+          choose_supports(dh, mapping, m, state.prm.springback.supports);
       add_supports(dh, mapping, m, supports, constraints);
       constraints.close();
       const std::string free = free_rigid_motions(dh, mapping, m, constraints);
@@ -323,7 +374,7 @@ namespace formsolve
       DoFHandler<dim>     dh(state.tria);
       dh.distribute_dofs(fe);
       AffineConstraints<double> constraints;
-      hold(state, *state.mapping, dh, constraints);
+      hold(state, *state.mapping, dh, constraints, false);
     }
 
 #define INSTANTIATE(dim)                                                                    \
@@ -344,7 +395,8 @@ namespace formsolve
   template std::vector<Support<dim>> hold(const state::State<dim> &,                        \
                                           const Mapping<dim> &,                             \
                                           const DoFHandler<dim> &,                          \
-                                          AffineConstraints<double> &);                     \
+                                          AffineConstraints<double> &,                      \
+                                          const bool);                                      \
   template void                      check_supports(const state::State<dim> &);             \
   template std::string describe_supports(const std::vector<Support<dim>> &,                 \
                                          const model::Model);

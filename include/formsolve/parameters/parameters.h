@@ -11,6 +11,7 @@
 #include <formsolve/parameters/split.h>
 #include <formsolve/parameters/springback.h>
 #include <formsolve/parameters/tools.h>
+#include <formsolve/parameters/trimming.h>
 
 namespace formsolve
 {
@@ -28,6 +29,7 @@ namespace formsolve
       NonlinearSolver nonlinear;
       LinearSolver    linear;
       Split           split;
+      Trimming        trimming;
       Springback      springback;
       Output          output;
 

@@ -29,6 +29,9 @@ namespace formsolve
       /// Where the springback normal to the part is reported (model's
       /// coordinates, end of forming, mm).
       std::vector<std::vector<double>> measure_points;
+      /// The split-ring test: the half model's symmetry plane x = 0 opens
+      /// where y > 0 (a slit along the generator at +y).
+      bool                             slit      = false;
       double                           tolerance = 1e-8; // |r| / |f_release|
       unsigned int                     max_iterations = 30;
       /// The end state is a sound start where the plastic strain exceeds

@@ -6,11 +6,13 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
 
 #include <formsolve/model/material_frame.h>
 #include <formsolve/parameters/output.h>
 #include <formsolve/state/quadrature_history.h>
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -43,6 +45,15 @@ namespace formsolve
       const model::MaterialFrame<dim> *frame = nullptr;
     };
 
+    /// Which active cells are written: @p out writes the locally owned
+    /// ones @p part selects.
+    template <int dim>
+    void select_cells(
+      dealii::DataOut<dim> &out,
+      const std::function<
+        bool(const typename dealii::Triangulation<dim>::active_cell_iterator &)>
+        &part);
+
     template <int dim>
     class VtuWriter
     {
@@ -60,6 +71,18 @@ namespace formsolve
                  const bool                     section,
                  const bool                     revolved);
 
+      /// Writes <base>_<step>.pvtu of the locally owned cells @p part
+      /// selects (a trimmed part), outside the time series; returns the
+      /// file's name.
+      std::string write_part(
+        const unsigned int             step,
+        const dealii::DoFHandler<dim> &dof_handler,
+        const dealii::Mapping<dim>    &mapping,
+        const OutputFields<dim>       &fields,
+        const std::function<bool(
+          const typename dealii::Triangulation<dim>::active_cell_iterator &)>
+                          &part,
+        const std::string &base) const;
       /// The (time, file) records of solution.pvd and revolved.pvd, for
       /// checkpoints.
       using Records = std::vector<std::pair<double, std::string>>;

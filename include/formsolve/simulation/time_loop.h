@@ -28,6 +28,8 @@
 #include <formsolve/springback/channel_measures.h>
 #include <formsolve/springback/measure_points.h>
 #include <formsolve/springback/release.h>
+#include <formsolve/springback/ring_opening.h>
+#include <formsolve/trimming/trim_cells.h>
 #include <formsolve/state/state.h>
 
 #include <chrono>
@@ -158,6 +160,15 @@ namespace formsolve
       /// and its lines on screen (source/simulation/time_loop_springback.cc).
       /// A release that fails is said, and the forming results stay.
       void spring_back();
+      /// After the last step: the trim (Trimming; doc/trimming.md), its
+      /// files and screen line (source/simulation/time_loop_trimming.cc).
+      void trim();
+      /// trimmed_<step>.pvtu and trim-outline.csv.
+      void write_trimmed();
+      /// The trimming lines of run-summary.txt ("" without it).
+      std::string trimming_summary() const;
+      /// Where the last step found its equilibrium: u - dt v.
+      std::unique_ptr<model::CurrentMapping<dim>> start_configuration() const;
       /// The springback lines of run-summary.txt ("" without it).
       std::string springback_summary() const;
       /// The section's profile before and after (springback-profile.csv)
@@ -278,6 +289,14 @@ namespace formsolve
       std::vector<springback::PointSpringback>                    at_points;
       std::string springback_failure;
       double      springback_seconds = 0; // its wall time
+      /// The trimmed part's cells (Trimming), what the trim did, why it
+      /// failed, its wall time.
+      std::unique_ptr<trimming::KeptCells>  kept;
+      std::unique_ptr<trimming::TrimReport> trimmed;
+      std::string                           trim_failure;
+      double                                trim_seconds = 0;
+      /// The split ring's opening (Springback/Slit).
+      std::unique_ptr<springback::RingOpening> opening;
       /// The step solver's body forces are those of the current mesh's
       /// last converged step (false after a mesh change without a step).
       bool   forces_current = false;

@@ -13,14 +13,17 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/hp/fe_collection.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
 #include <formsolve/material/release_law.h>
+#include <formsolve/springback/end_load.h>
 #include <formsolve/springback/end_state.h>
 #include <formsolve/springback/supports.h>
+#include <formsolve/trimming/trim_cells.h>
 
 #include <memory>
 #include <string>
@@ -30,8 +33,6 @@ namespace formsolve
 {
   namespace springback
   {
-    using VectorType = dealii::TrilinosWrappers::MPI::Vector;
-
     /// What the release found (all ranks).
     struct ReleaseSummary
     {
@@ -65,25 +66,43 @@ namespace formsolve
       /// The release of @p state's end of forming; throws naming
       /// Springback/Supports when they leave a rigid-body motion free.
       /// @p end_forces: the forming's internal forces at its converged last
-      /// step (on the state's DoFs, owned), which the tools balanced; if
-      /// nullptr, the release takes the whole int B^T sigma_end dV as the
-      /// load (g = 0).
+      /// step (on the state's DoFs), which the tools balanced; if nullptr,
+      /// the release takes the whole int B^T sigma_end dV as the load
+      /// (g = 0).
       /// @p configuration: where the last step found its equilibrium (its
       /// start), on which the end stress and forces are evaluated and the
       /// release is solved.
+      /// @p kept: the trimmed part (nullptr, or no cell cut away: the whole
+      /// part); the release is solved on these cells and loaded by their
+      /// own end stress, int_part B^T sigma_end dV, which holds the tools'
+      /// forces and the traction of the cells cut away (eq. 13a);
+      /// @p end_forces are not used then.
       Release(const state::State<dim>           &state,
               const dealii::Mapping<dim>        &configuration,
               const material::RigidViscoplastic &material,
               const material::ReleaseLaw        &law,
-              const VectorType                  *end_forces);
+              const VectorType                  *end_forces,
+              const trimming::KeptCells         *kept = nullptr);
 
       /// Solves; throws if Newton does not reach Springback/Tolerance.
       ReleaseSummary solve();
 
+      /// The release's element on every cell of the mesh; the displacement
+      /// is 0 on cells cut away.
       const dealii::DoFHandler<dim> &dof_handler() const { return dh; }
+      /// Whether a cell (of any DoFHandler on the state's mesh) belongs to
+      /// the part released: every locally owned or ghost cell when the part
+      /// is not trimmed.
+      template <class Iterator>
+      bool in_part(const Iterator &cell) const
+      {
+        return !kept || (*kept)[cell->active_cell_index()];
+      }
+      /// Whether cells were cut away (on any rank).
+      bool trimmed() const { return kept != nullptr; }
       /// The springback displacement (ghosted) and its owned copy.
       const VectorType &displacement() const { return u_ghost; }
-      const VectorType &owned_displacement() const { return u; }
+      const VectorType &owned_displacement() const { return u_full; }
       /// Per active cell (locally owned): the residual stress's mean over
       /// the cell, its equivalent stress (the criterion's) and the
       /// end-of-forming one (MPa), and the cell's volume fraction that
@@ -103,23 +122,28 @@ namespace formsolve
       double assemble(const bool matrix, ReleaseSummary &s);
       /// The statistics of the end state alone.
       void measure_end_state(ReleaseSummary &s) const;
-      /// The forming's forces at the vertices on the release's vertex DoFs
-      /// (a load that acts at the vertices in either space).
-      VectorType tool_forces(const VectorType &end_forces) const;
+      /// The displacement on dh from the part's.
+      void spread_displacement();
 
       const state::State<dim>               &state;
       const dealii::Mapping<dim>            &mapping;
       const material::ReleaseLaw            &law;
       const parameters::Run                 &prm;
       dealii::FESystem<dim>                  fe;
+      /// fe on the part's cells, nothing on those cut away.
+      dealii::hp::FECollection<dim>          part_fe;
       dealii::QGauss<dim>                    quadrature;
-      dealii::DoFHandler<dim>                dh;
+      dealii::DoFHandler<dim>                dh, part;
+      const trimming::KeptCells             *kept;
+      /// The part's: hanging nodes, symmetry planes, supports.
       dealii::AffineConstraints<double>      constraints;
       EndState<dim>                          end;
       std::vector<Support<dim>>              supports;
       dealii::TrilinosWrappers::SparseMatrix matrix;
       const VectorType                      *end_forces;
-      VectorType                             u, u_ghost, residual, defect;
+      /// On the part's DoFs, except u_ghost and u_full (dh's).
+      VectorType u, residual, defect, u_ghost, u_full;
+      VectorType part_ghost; // u, ghosted
       dealii::Vector<float> cell_residual, cell_end, cell_mean, cell_yielded;
     };
   } // namespace springback

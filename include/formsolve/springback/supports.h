@@ -56,15 +56,17 @@ namespace formsolve
 
     /// The constraints of the release on @p dof_handler (a displacement on
     /// @p state's mesh, nodes placed by @p mapping): hanging nodes, the model's
-    /// symmetry planes and axis, and the supports of Springback/Supports;
-    /// closed. Throws naming Springback/Supports if a rigid-body motion is left
+    /// symmetry planes and axis (with @p slit, Springback/Slit's opening of
+    /// the plane x = 0), and the supports of Springback/Supports; closed.
+    /// Throws naming Springback/Supports if a rigid-body motion is left
     /// free (the same on every rank). Returns the supports.
     template <int dim>
     std::vector<Support<dim>>
     hold(const state::State<dim>           &state,
          const dealii::Mapping<dim>        &mapping,
          const dealii::DoFHandler<dim>     &dof_handler,
-         dealii::AffineConstraints<double> &constraints);
+         dealii::AffineConstraints<double> &constraints,
+         const bool                         slit);
 
     /// "z at (r 0, z -1.2); ..." for the run summary.
     template <int dim>

@@ -1,0 +1,214 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <formsolve/model/cell_kinematics.h>
+#include <formsolve/model/dimensions.h>
+#include <formsolve/refinement/adapt.h>
+#include <formsolve/trimming/trim_cells.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace formsolve
+{
+  namespace trimming
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      template <int dim>
+      using Cell = typename Triangulation<dim>::active_cell_iterator;
+
+      /// The cell's vertices in the current configuration.
+      template <int dim>
+      std::vector<Point<dim>> vertices(const state::State<dim> &state,
+                                       const Cell<dim>         &cell)
+      {
+        std::vector<Point<dim>> x;
+        for (const unsigned int v : cell->vertex_indices())
+          x.push_back(state.mapping->transform_unit_to_real_cell(
+            cell, GeometryInfo<dim>::unit_cell_vertex(v)));
+        return x;
+      }
+
+      template <int dim>
+      Point<dim> centre(const std::vector<Point<dim>> &x)
+      {
+        Point<dim> c;
+        for (const auto &p : x)
+          c += p / double(x.size());
+        return c;
+      }
+
+      /// The largest |side| at the vertices of a cell the line crosses,
+      /// or 0 if it does not cross it.
+      template <int dim>
+      double crossing(const TrimShape<dim> &shape, const std::vector<Point<dim>> &x)
+      {
+        double low = 1e300, high = -1e300, far = 0;
+        for (const auto &p : x)
+          {
+            const double s = shape.side(p);
+            low            = std::min(low, s);
+            high           = std::max(high, s);
+            far            = std::max(far, std::abs(s));
+          }
+        return low <= 0 && high > 0 ? far : 0;
+      }
+
+      /// Flags the cells the line crosses whose nodes lie further than the
+      /// tolerance from it (@p line), and the cut-away cells coarser than a
+      /// kept cell they share a vertex with. Returns the number flagged
+      /// here and the largest crossing distance.
+      template <int dim>
+      std::pair<unsigned int, double> flag(state::State<dim>    &state,
+                                           const TrimShape<dim> &shape,
+                                           const double          tolerance,
+                                           const bool            line)
+      {
+        const KeptCells kept    = kept_cells(state, shape);
+        const auto      touches = GridTools::vertex_to_cell_map(state.tria);
+        unsigned int    n       = 0;
+        double          far     = 0;
+        for (const auto &cell : state.tria.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const double d = crossing(shape, vertices(state, cell));
+              far            = std::max(far, d);
+              bool refine    = line && d > tolerance;
+              if (!kept[cell->active_cell_index()])
+                for (const unsigned int v : cell->vertex_indices())
+                  for (const auto &other : touches[cell->vertex_index(v)])
+                    if (!other->is_artificial() &&
+                        kept[other->active_cell_index()] &&
+                        other->level() > cell->level())
+                      refine = true;
+              if (refine)
+                {
+                  cell->set_refine_flag();
+                  ++n;
+                }
+            }
+        return {n, far};
+      }
+
+      template <int dim>
+      std::pair<double, double> kept_integrals(const state::State<dim> &state,
+                                               const KeptCells         &kept)
+      {
+        model::CellKinematics<dim> k(state.kinematics,
+                                     *state.mapping,
+                                     state.dof_handler.get_fe(),
+                                     state.history_rule);
+        double                     volume = 0, strain = 0;
+        for (const auto &cell : state.dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned() && kept[cell->active_cell_index()])
+            {
+              k.reinit(cell);
+              const auto h = state.history.get_data(cell);
+              for (unsigned int q = 0; q < k.n_points(); ++q)
+                {
+                  volume += k.dV(q);
+                  strain += h[q]->strain * k.dV(q);
+                }
+            }
+        return {Utilities::MPI::sum(volume, state.comm),
+                Utilities::MPI::sum(strain, state.comm)};
+      }
+    } // namespace
+
+    template <int dim>
+    KeptCells kept_cells(const state::State<dim> &state,
+                         const TrimShape<dim>    &shape)
+    {
+      KeptCells kept(state.tria.n_active_cells(), false);
+      for (const auto &cell : state.tria.active_cell_iterators())
+        if (!cell->is_artificial())
+          kept[cell->active_cell_index()] =
+            shape.side(centre(vertices(state, cell))) > 0;
+      return kept;
+    }
+
+    template <int dim>
+    TrimReport trim_part(state::State<dim>               &state,
+                         const TrimShape<dim>            &shape,
+                         const parameters::Trimming      &trimming,
+                         const state::HistoryUpdate<dim> &update,
+                         KeptCells                       &kept)
+    {
+      TrimReport report;
+      report.cells_before  = state.tria.n_global_active_cells();
+      report.volume_before = kept_integrals(
+                               state, KeptCells(state.tria.n_active_cells(), true))
+                               .first;
+      // Each pass halves the cells the line crosses; the passes that only
+      // match a kept cell's cut-away neighbours to its level are extra
+      // (bounded by the finest level).
+      while (true)
+        {
+          const bool line = report.passes < trimming.max_passes;
+          const auto [n, far] =
+            flag(state, shape, trimming.tolerance, line);
+          report.edge_deviation = Utilities::MPI::max(far, state.comm);
+          if (Utilities::MPI::sum(n, state.comm) == 0)
+            break;
+          const auto a = refinement::adapt_flagged(state, update);
+          if (!a.changed)
+            break;
+          if (line && report.edge_deviation > trimming.tolerance)
+            ++report.passes;
+        }
+      kept                                    = kept_cells(state, shape);
+      report.cells_after                      = state.tria.n_global_active_cells();
+      unsigned int n_kept                     = 0;
+      for (const auto &cell : state.tria.active_cell_iterators())
+        if (cell->is_locally_owned() && kept[cell->active_cell_index()])
+          ++n_kept;
+      report.cells_kept = Utilities::MPI::sum(double(n_kept), state.comm);
+      std::tie(report.volume_kept, report.strain_kept) =
+        kept_integrals(state, kept);
+      return report;
+    }
+
+    template <int dim>
+    std::vector<Point<dim>> cut_faces(const state::State<dim> &state,
+                                      const KeptCells         &kept)
+    {
+      std::vector<Point<dim>> centres;
+      for (const auto &cell : state.tria.active_cell_iterators())
+        if (cell->is_locally_owned() && kept[cell->active_cell_index()])
+          for (const unsigned int f : cell->face_indices())
+            if (!cell->at_boundary(f))
+              {
+                const auto other = cell->neighbor(f);
+                // Conforming across the cut (trim_part): the neighbour is
+                // active and as fine as the cell.
+                if (other->is_active() &&
+                    !kept[other->active_cell_index()])
+                  {
+                    Point<dim> unit;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      unit[d] = 0.5;
+                    unit[GeometryInfo<dim>::unit_normal_direction[f]] = f % 2;
+                    centres.push_back(
+                      state.mapping->transform_unit_to_real_cell(cell, unit));
+                  }
+              }
+      return centres;
+    }
+
+#define INSTANTIATE(dim)                                                    \
+  template TrimReport trim_part(state::State<dim> &,                        \
+                                const TrimShape<dim> &,                     \
+                                const parameters::Trimming &,               \
+                                const state::HistoryUpdate<dim> &,          \
+                                KeptCells &);                               \
+  template KeptCells  kept_cells(const state::State<dim> &,                 \
+                                const TrimShape<dim> &);                    \
+  template std::vector<Point<dim>> cut_faces(const state::State<dim> &,     \
+                                             const KeptCells &);
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace trimming
+} // namespace formsolve
