@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <formsolve/model/model.h>
+#include <formsolve/parameters/choice.h>
 #include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/parameters.h>
 #include <formsolve/parameters/require.h>
@@ -17,6 +18,15 @@ namespace formsolve
     namespace
     {
       const char *entry = "Trimming/Planes";
+
+      const Choice<CurveSide> &curve_sides()
+      {
+        static const Choice<CurveSide> c{{"inside", CurveSide::inside},
+                                         {"outside", CurveSide::outside},
+                                         {"left", CurveSide::left},
+                                         {"right", CurveSide::right}};
+        return c;
+      }
 
       /// "0.5 x - z" -> (x, 0.5), (z, -1); false if it is not such a sum.
       bool read_terms(const std::string                    &s,
@@ -64,6 +74,11 @@ namespace formsolve
         return !terms.empty();
       }
     } // namespace
+
+    std::string name(const CurveSide side)
+    {
+      return curve_sides().name(side);
+    }
 
     std::vector<PlaneCut> parse_plane_cuts(const std::string &text)
     {
@@ -127,10 +142,7 @@ namespace formsolve
             "its first. Empty: none.");
       d.add("Curve keeps",
             curve_side,
-            Choice<CurveSide>{{"inside", CurveSide::inside},
-                              {"outside", CurveSide::outside},
-                              {"left", CurveSide::left},
-                              {"right", CurveSide::right}},
+            curve_sides(),
             "Which side of the curve stays: inside or outside a closed "
             "curve, left or right of an open one (walking from its first "
             "point, seen from +z).");

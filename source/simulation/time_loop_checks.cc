@@ -65,6 +65,8 @@ namespace formsolve
                     "on the flange"));
       if (prm.springback.enabled)
         springback::check_supports(state); // before any work
+      if (prm.trimming.any())
+        trimming::check_trim_curve(state, prm.trimming);
       scene_warnings.clear();
       state.update_contact_areas(); // which surface faces which tool
       check_reach();

@@ -3,6 +3,7 @@
 
 #include <formsolve/model/cell_kinematics.h>
 #include <formsolve/model/dimensions.h>
+#include <formsolve/parameters/require.h>
 #include <formsolve/refinement/adapt.h>
 #include <formsolve/trimming/trim_cells.h>
 
@@ -25,11 +26,8 @@ namespace formsolve
       std::vector<Point<dim>> vertices(const state::State<dim> &state,
                                        const Cell<dim>         &cell)
       {
-        std::vector<Point<dim>> x;
-        for (const unsigned int v : cell->vertex_indices())
-          x.push_back(state.mapping->transform_unit_to_real_cell(
-            cell, GeometryInfo<dim>::unit_cell_vertex(v)));
-        return x;
+        const auto x = state.mapping->get_vertices(cell); // cached
+        return std::vector<Point<dim>>(x.begin(), x.end());
       }
 
       template <int dim>
@@ -172,6 +170,37 @@ namespace formsolve
     }
 
     template <int dim>
+    void check_trim_curve(const state::State<dim>    &state,
+                          const parameters::Trimming &trimming)
+    {
+      // Reading the files is the first check.
+      const TrimShape<dim> all(trimming, state.prm.geometry.model, state.comm);
+      if (trimming.curve_file.empty())
+        return;
+      parameters::Trimming curve_only;
+      curve_only.curve_file = trimming.curve_file;
+      curve_only.curve_side = trimming.curve_side;
+      const TrimShape<dim> curve(curve_only,
+                                 state.prm.geometry.model,
+                                 state.comm);
+      const KeptCells      kept = kept_cells(state, curve);
+      unsigned int         in = 0, out = 0;
+      for (const auto &cell : state.tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          ++(kept[cell->active_cell_index()] ? in : out);
+      in  = Utilities::MPI::sum(in, state.comm);
+      out = Utilities::MPI::sum(out, state.comm);
+      parameters::require(in > 0 && out > 0,
+                          "Trimming/Curve file",
+                          "the curve in " + trimming.curve_file +
+                            " misses the blank: it keeps " +
+                            (in > 0 ? "all" : "none") +
+                            " of it (x, y in mm, the part's coordinates; "
+                            "Curve keeps = " +
+                            parameters::name(trimming.curve_side) + ")");
+    }
+
+    template <int dim>
     std::vector<Point<dim>> cut_faces(const state::State<dim> &state,
                                       const KeptCells         &kept)
     {
@@ -207,7 +236,9 @@ namespace formsolve
   template KeptCells  kept_cells(const state::State<dim> &,                 \
                                 const TrimShape<dim> &);                    \
   template std::vector<Point<dim>> cut_faces(const state::State<dim> &,     \
-                                             const KeptCells &);
+                                             const KeptCells &);            \
+  template void check_trim_curve(const state::State<dim> &,                 \
+                                 const parameters::Trimming &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace trimming

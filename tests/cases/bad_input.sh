@@ -105,6 +105,33 @@ expect springback_support_coordinates "Springback/Supports: a point has 3 coordi
 expect springback_support_free "Springback/Supports: leave the part free to move (translation along z)" \
   "$channel" --set "Springback/Enabled=true" --set "Material/Young's modulus=206000" \
   --set "Springback/Supports=10, 0: x"
+expect springback_measure_point "Springback/Measure points: 'ten, 0' is not a point" \
+  "$channel" --set "Springback/Enabled=true" --set "Material/Young's modulus=206000" \
+  --set "Springback/Measure points=ten, 0"
+# Trimming: a half-space that is none, a coordinate the model has not, a
+# curve in a section, a missing file, a curve that misses the blank, a
+# closed curve kept on one side, a slit outside the half model.
+expect trim_plane_text "Trimming/Planes: 'z >> 3' is not a half-space" \
+  "$channel" --set "Trimming/Planes=z >> 3"
+expect trim_plane_letter "Trimming/Planes: 'y < 3' names y, not a coordinate of Geometry/Model = plane strain" \
+  "$channel" --set "Trimming/Planes=y < 3"
+printf '0, 0\n10, 0\n10, 10\n0, 0\n' > "$work/triangle.csv"
+expect trim_curve_section "Trimming/Curve file: a curve in plan view needs a 3-D model" \
+  "$channel" --set "Trimming/Curve file=$work/triangle.csv"
+expect trim_curve_missing "$work/none.csv" \
+  "$cases/cup-quarter.prm" --set "Trimming/Curve file=$work/none.csv"
+printf '500, 500\n510, 500\n510, 510\n500, 500\n' > "$work/far.csv"
+expect trim_curve_misses "Trimming/Curve file: the curve in $work/far.csv misses the blank: it keeps none of it" \
+  "$cases/cup-quarter.prm" --set "Trimming/Curve file=$work/far.csv"
+expect trim_curve_side "Trimming/Curve keeps: the curve in $work/triangle.csv is closed" \
+  "$cases/cup-quarter.prm" --set "Trimming/Curve file=$work/triangle.csv" --set "Trimming/Curve keeps=left"
+expect slit_model "Springback/Slit: the slit lies in the symmetry plane x = 0 of Geometry/Model = half" \
+  "$cases/cup-quarter.prm" --set "Springback/Enabled=true" --set "Material/Young's modulus=206000" \
+  --set "Springback/Slit=true" --set "Trimming/Planes=z < -1"
+expect slit_untrimmed "Springback/Slit: slits a ring trimmed from the part" \
+  "$cases/cup-quarter.prm" --set "Geometry/Model=half" --set "Springback/Enabled=true" \
+  --set "Material/Young's modulus=206000" --set "Springback/Slit=true"
+expect density_negative "Material/Density: must be positive" "$base" --set "Material/Density=-1"
 expect slice_round "Geometry/Blank shape: must be rectangle for Model = slice" "$cases/channel-slice.prm" \
   --set "Geometry/Blank shape=round"
 expect zero_holder_force "Tools/Blank holder/Force" "$base" --set "Tools/Blank holder/Enabled=true" \

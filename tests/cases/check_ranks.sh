@@ -21,7 +21,7 @@ rows=$(($(wc -l < "$out/np1/history.csv") - 1))
 [ "$rows" -ge 3 ] || { echo "FAIL: only $rows steps"; exit 1; }
 for ranks in ${counts#1 }; do
   # With Springback: the sprung section and the measure points too.
-  extra=$(cd "$out/np1" && ls springback-profile.csv springback-points.csv 2>/dev/null | tr '\n' ' ')
+  extra=$(cd "$out/np1" && ls springback-profile.csv springback-points.csv trim-outline.csv 2>/dev/null | tr '\n' ' ')
   for f in history.csv solver.csv sheet.csv $extra; do
     numdiff -q -s ', \t\n' -r 1e-5 -a 1e-7 "$out/np1/$f" "$out/np$ranks/$f" ||
       { echo "FAIL: $ranks ranks differ from 1 rank ($f):";

@@ -43,7 +43,7 @@ namespace formsolve
       CurveSide             curve_side = CurveSide::inside;
       std::string           surface_file; // STL or gmsh
       SurfaceSide           surface_side = SurfaceSide::behind;
-      double                tolerance    = 0.1; // mm, of the cut edge
+      double                tolerance    = 0.25; // mm, of the cut edge
       unsigned int          max_passes   = 4;   // refinement passes
 
       bool any() const
@@ -59,6 +59,9 @@ namespace formsolve
     /// The cuts against the model: coordinate letters, a plan-view curve or
     /// a surface only in 3-D; throws naming the entry.
     void check_trimming(const Run &run);
+
+    /// "inside", "outside", "left", "right".
+    std::string name(const CurveSide side);
 
     /// "z > 8; x + 0.5 z < 30" -> cuts; throws naming Trimming/Planes.
     std::vector<PlaneCut> parse_plane_cuts(const std::string &text);

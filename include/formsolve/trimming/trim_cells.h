@@ -48,6 +48,13 @@ namespace formsolve
     KeptCells kept_cells(const state::State<dim> &state,
                          const TrimShape<dim>    &shape);
 
+    /// Before any work: the trim curve of Trimming/Curve file must cross
+    /// the blank (some of its cells on either side); throws naming the
+    /// entry and file. The files are read (errors name them). Collective.
+    template <int dim>
+    void check_trim_curve(const state::State<dim>    &state,
+                          const parameters::Trimming &trimming);
+
     /// The centres of the faces between kept and cut-away cells (current
     /// configuration, locally owned cells), in no order.
     template <int dim>
