@@ -64,8 +64,8 @@ namespace formsolve
                     skip();
                   }
               }
-            if (i >= s.size() || std::string("rxyz").find(s[i]) ==
-                                   std::string::npos)
+            if (i >= s.size() ||
+                std::string("rxyz").find(s[i]) == std::string::npos)
               return false;
             terms.emplace_back(s[i], sign * coefficient);
             ++i;
@@ -87,11 +87,11 @@ namespace formsolve
         {
           if (item.empty())
             continue;
-          const auto at    = item.find_first_of("<>");
+          const auto at = item.find_first_of("<>");
           PlaneCut   c;
-          c.text           = item;
-          bool        ok   = at != std::string::npos &&
-                      item.find_first_of("<>", at + 1) == std::string::npos;
+          c.text  = item;
+          bool ok = at != std::string::npos &&
+                    item.find_first_of("<>", at + 1) == std::string::npos;
           char       *end  = nullptr;
           std::string rest = ok ? item.substr(at + 1) : "";
           if (ok && !rest.empty() && rest[0] == '=')
@@ -100,7 +100,7 @@ namespace formsolve
             {
               c.keep_greater = item[at] == '>';
               c.value        = std::strtod(rest.c_str(), &end);
-              ok = end != rest.c_str() &&
+              ok             = end != rest.c_str() &&
                    std::string(end).find_first_not_of(" \t") ==
                      std::string::npos &&
                    std::isfinite(c.value) &&

@@ -275,11 +275,11 @@ namespace formsolve
                                   dof_handler.get_communicator());
     }
 
-#define INSTANTIATE(dim)                                                   \
-  template class VtuWriter<dim>;                                           \
-  template void select_cells(                                              \
-    DataOut<dim> &,                                                        \
-    const std::function<bool(                                              \
+#define INSTANTIATE(dim)         \
+  template class VtuWriter<dim>; \
+  template void select_cells(    \
+    DataOut<dim> &,              \
+    const std::function<bool(    \
       const typename Triangulation<dim>::active_cell_iterator &)> &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE

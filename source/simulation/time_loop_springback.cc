@@ -43,8 +43,8 @@ namespace formsolve
             *configuration,
             material,
             law,
-            forces_current ? &step_solver.forming_system().body_forces() :
-                             nullptr,
+            forces_current ? &step_solver.forming_system().body_forces()
+                           : nullptr,
             kept.get());
           const auto s = release.solve();
           springback::write_sprung_part(release, state, prm.output.directory);
@@ -175,9 +175,9 @@ namespace formsolve
         << "\nspringback_released_force = " << s.released_force
         << "\nspringback_residual = " << s.residual
         << "\nspringback_imbalance = " << s.imbalance << "\nspringback_load = "
-        << (kept             ? "end stress of the trimmed part" :
-            forces_current ? "tool forces" :
-                             "end stress")
+        << (kept             ? "end stress of the trimmed part"
+            : forces_current ? "tool forces"
+                             : "end stress")
         << "\nspringback_max_displacement = " << s.max_displacement
         << "\nspringback_yielded_fraction = " << s.yielded_fraction
         << "\nspringback_max_trial_ratio = " << s.max_trial_ratio

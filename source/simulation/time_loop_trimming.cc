@@ -38,9 +38,12 @@ namespace formsolve
           const trimming::TrimShape<dim> shape(prm.trimming,
                                                prm.geometry.model,
                                                comm);
-          trimming::KeptCells cells;
-          const auto          r =
-            trimming::trim_part(state, shape, prm.trimming, history_update, cells);
+          trimming::KeptCells            cells;
+          const auto                     r = trimming::trim_part(state,
+                                             shape,
+                                             prm.trimming,
+                                             history_update,
+                                             cells);
           if (r.cells_after != r.cells_before)
             forces_current = false;
           AssertThrow(r.volume_kept > 0,
@@ -53,8 +56,8 @@ namespace formsolve
           line << "trimming: kept " << r.cells_kept << " of " << r.cells_after
                << " cells (" << 100 * r.volume_kept / r.volume_before
                << " % of the volume); the cut edge lies within "
-               << r.edge_deviation << " mm of the trim line after "
-               << r.passes << " refinement pass(es)";
+               << r.edge_deviation << " mm of the trim line after " << r.passes
+               << " refinement pass(es)";
           if (r.volume_kept >= r.volume_before * (1 - 1e-12))
             line << "; the cuts remove nothing";
           pcout << line.str() << "\n";
@@ -74,7 +77,7 @@ namespace formsolve
     template <int dim>
     void TimeLoop<dim>::write_trimmed()
     {
-      state.velocity_ghost = state.velocity;
+      state.velocity_ghost     = state.velocity;
       state.displacement_ghost = state.displacement;
       const model::MaterialFrame<dim> frame(material.rolling_direction());
       postprocess::OutputFields<dim>  f{&state.velocity_ghost,
@@ -82,9 +85,8 @@ namespace formsolve
                                        {},
                                        &state.history,
                                        {},
-                                       material.isotropic() ? nullptr :
-                                                              &frame};
-      const auto &cells = *kept;
+                                       material.isotropic() ? nullptr : &frame};
+      const auto                     &cells = *kept;
       writer->write_part(
         state.step,
         state.dof_handler,
@@ -94,7 +96,7 @@ namespace formsolve
         "trimmed");
       // The cut edge: the centres of the faces between kept and cut-away
       // cells, by angle about the z axis (3-D) or along z (sections).
-      const auto mine = trimming::cut_faces(state, cells);
+      const auto          mine = trimming::cut_faces(state, cells);
       std::vector<double> flat;
       for (const auto &p : mine)
         for (unsigned int d = 0; d < dim; ++d)
@@ -120,17 +122,19 @@ namespace formsolve
                   return key(a) < key(b) ||
                          (key(a) == key(b) && a[dim - 1] < b[dim - 1]);
                 });
-      postprocess::write_atomically(
-        prm.output.directory + "/trim-outline.csv", [&](std::ostream &o) {
-          const auto n = model::coordinate_names(prm.geometry.model);
-          o.precision(10);
-          for (unsigned int d = 0; d < dim; ++d)
-            o << (d ? "," : "") << n[d];
-          o << '\n';
-          for (const auto &p : points)
-            for (unsigned int d = 0; d < dim; ++d)
-              o << p[d] << (d + 1 < dim ? ',' : '\n');
-        });
+      postprocess::write_atomically(prm.output.directory + "/trim-outline.csv",
+                                    [&](std::ostream &o) {
+                                      const auto n = model::coordinate_names(
+                                        prm.geometry.model);
+                                      o.precision(10);
+                                      for (unsigned int d = 0; d < dim; ++d)
+                                        o << (d ? "," : "") << n[d];
+                                      o << '\n';
+                                      for (const auto &p : points)
+                                        for (unsigned int d = 0; d < dim; ++d)
+                                          o << p[d]
+                                            << (d + 1 < dim ? ',' : '\n');
+                                    });
     }
 
     template <int dim>
@@ -148,8 +152,9 @@ namespace formsolve
         << "\ntrimming_wall_time = " << trim_seconds;
       if (!trimmed)
         return f.str();
-      const auto  &r    = *trimmed;
-      const double full = r.volume_kept * model::symmetry_factor(prm.geometry.model);
+      const auto  &r = *trimmed;
+      const double full =
+        r.volume_kept * model::symmetry_factor(prm.geometry.model);
       f << "\ntrimming_passes = " << r.passes
         << "\ntrimming_edge_deviation = " << r.edge_deviation
         << "\ntrimming_cells_kept = " << r.cells_kept
@@ -163,11 +168,11 @@ namespace formsolve
       return f.str();
     }
 
-#define INSTANTIATE(dim)                                                  \
-  template std::unique_ptr<model::CurrentMapping<dim>>                    \
-                     TimeLoop<dim>::start_configuration() const;          \
-  template void        TimeLoop<dim>::trim();                             \
-  template void        TimeLoop<dim>::write_trimmed();              \
+#define INSTANTIATE(dim)                                           \
+  template std::unique_ptr<model::CurrentMapping<dim>>             \
+                       TimeLoop<dim>::start_configuration() const; \
+  template void        TimeLoop<dim>::trim();                      \
+  template void        TimeLoop<dim>::write_trimmed();             \
   template std::string TimeLoop<dim>::trimming_summary() const;
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE

@@ -19,8 +19,11 @@ namespace formsolve
       forming(const state::State<dim>                              &state,
               const typename DoFHandler<dim>::active_cell_iterator &cell)
       {
-        return typename DoFHandler<dim>::active_cell_iterator(
-          &state.tria, cell->level(), cell->index(), &state.dof_handler);
+        return
+          typename DoFHandler<dim>::active_cell_iterator(&state.tria,
+                                                         cell->level(),
+                                                         cell->index(),
+                                                         &state.dof_handler);
       }
     } // namespace
 
@@ -29,12 +32,12 @@ namespace formsolve
                              const Mapping<dim>      &mapping,
                              const VectorType        &f)
     {
-      model::CellKinematics<dim> k(state.kinematics,
+      model::CellKinematics<dim>           k(state.kinematics,
                                    mapping,
                                    state.fe,
                                    QGauss<dim>(state.fe.degree + 1),
                                    update_values);
-      const unsigned int         n = state.fe.n_dofs_per_cell();
+      const unsigned int                   n = state.fe.n_dofs_per_cell();
       std::vector<types::global_dof_index> dofs(n);
       VectorType                           mass(state.owned, state.comm);
       Vector<double>                       m(n);
@@ -67,7 +70,7 @@ namespace formsolve
                        const Mapping<dim>              &mapping,
                        const VectorType                &f)
     {
-      const auto &fe = dh.get_fe();
+      const auto        &fe    = dh.get_fe();
       const IndexSet     owned = dh.locally_owned_dofs();
       VectorType         out(owned, dh.get_communicator());
       const unsigned int n1 = state.fe.n_dofs_per_cell(),
@@ -93,13 +96,19 @@ namespace formsolve
         }
       // Otherwise the density's work against dh's shape functions: the
       // resultant is kept, and no force is a point load on a finer element.
-      const VectorType density = force_density(state, mapping, f);
+      const VectorType           density = force_density(state, mapping, f);
       const QGauss<dim>          quadrature(fe.degree + 1);
-      model::CellKinematics<dim> k1(
-        state.kinematics, mapping, state.fe, quadrature, update_values);
-      model::CellKinematics<dim> k2(
-        state.kinematics, mapping, fe, quadrature, update_values);
-      Vector<double> r(n2);
+      model::CellKinematics<dim> k1(state.kinematics,
+                                    mapping,
+                                    state.fe,
+                                    quadrature,
+                                    update_values);
+      model::CellKinematics<dim> k2(state.kinematics,
+                                    mapping,
+                                    fe,
+                                    quadrature,
+                                    update_values);
+      Vector<double>             r(n2);
       for (const auto &cell : dh.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -125,14 +134,14 @@ namespace formsolve
       return out;
     }
 
-#define INSTANTIATE(dim)                                                \
-  template VectorType force_density(const state::State<dim> &,          \
-                                    const Mapping<dim> &,               \
-                                    const VectorType &);                \
-  template VectorType load_on(const DoFHandler<dim> &,                  \
-                              const AffineConstraints<double> &,        \
-                              const state::State<dim> &,                \
-                              const Mapping<dim> &,                     \
+#define INSTANTIATE(dim)                                         \
+  template VectorType force_density(const state::State<dim> &,   \
+                                    const Mapping<dim> &,        \
+                                    const VectorType &);         \
+  template VectorType load_on(const DoFHandler<dim> &,           \
+                              const AffineConstraints<double> &, \
+                              const state::State<dim> &,         \
+                              const Mapping<dim> &,              \
                               const VectorType &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE

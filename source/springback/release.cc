@@ -31,7 +31,8 @@ namespace formsolve
     {
       /// Whether @p kept leaves out any cell (all ranks).
       template <int dim>
-      bool trims(const state::State<dim> &state, const trimming::KeptCells *kept)
+      bool trims(const state::State<dim>   &state,
+                 const trimming::KeptCells *kept)
       {
         bool cut = false;
         if (kept)
@@ -76,11 +77,7 @@ namespace formsolve
       const IndexSet owned = part.locally_owned_dofs();
       IndexSet       relevant;
       DoFTools::extract_locally_relevant_dofs(part, relevant);
-      supports = hold(state,
-                      mapping,
-                      part,
-                      constraints,
-                      prm.springback.slit);
+      supports = hold(state, mapping, part, constraints, prm.springback.slit);
       DynamicSparsityPattern dsp(relevant);
       DoFTools::make_sparsity_pattern(part, dsp, constraints, false);
       SparsityTools::distribute_sparsity_pattern(dsp,
@@ -208,7 +205,7 @@ namespace formsolve
     template <int dim>
     void Release<dim>::spread_displacement()
     {
-      part_ghost = u;
+      part_ghost                                 = u;
       const unsigned int                   n     = fe.n_dofs_per_cell();
       const IndexSet                       owned = dh.locally_owned_dofs();
       std::vector<types::global_dof_index> mine(n), dofs(n);
@@ -234,18 +231,18 @@ namespace formsolve
     ReleaseSummary Release<dim>::solve()
     {
       ReleaseSummary s;
-      s.supports = describe_supports(supports, prm.geometry.model);
-      u          = 0;
-      part_ghost = u;
-      defect = 0;
+      s.supports         = describe_supports(supports, prm.geometry.model);
+      u                  = 0;
+      part_ghost         = u;
+      defect             = 0;
       const double whole = assemble(true, s);
       // A trimmed part's load is its own end stress (eq. 13a).
       if (end_forces && !trimmed())
         {
           // g: the end stress's own imbalance in the release's space, no
           // load (eq. 12c): r(0) = the tools' forces.
-          const VectorType f = load_on(part, constraints, state, mapping,
-                                       *end_forces);
+          const VectorType f =
+            load_on(part, constraints, state, mapping, *end_forces);
           defect = residual;
           defect -= f;
           s.imbalance = whole > 0 ? defect.l2_norm() / whole : 0;
@@ -253,7 +250,13 @@ namespace formsolve
         }
       s.released_force = residual.l2_norm();
       measure_end_state(s);
-      auto   linear = solver::create_linear_solver(prm.linear, true);
+      // One factorisation, in double precision: the forming's reuse and
+      // single-precision settings serve its many similar solves, not this.
+      parameters::LinearSolver settings = prm.linear;
+      settings.factor_precision = parameters::FactorPrecision::double_precision;
+      settings.reuse_iterations = 0;
+      settings.low_rank_tolerance = 0;
+      auto   linear = solver::create_linear_solver(settings, true);
       double norm   = s.released_force;
       // A part without stress has nothing to release: u = 0 exactly.
       while (norm > prm.springback.tolerance * s.released_force)

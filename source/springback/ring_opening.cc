@@ -24,7 +24,7 @@ namespace formsolve
           const auto &unit  = fe.get_unit_support_points();
           const auto  owned = dh.locally_owned_dofs();
           const auto &u     = release.displacement();
-          std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+          std::vector<types::global_dof_index>      dofs(fe.n_dofs_per_cell());
           std::map<types::global_dof_index, double> opening;
           for (const auto &cell : dh.active_cell_iterators())
             if (cell->is_locally_owned() && release.in_part(cell))
@@ -42,8 +42,7 @@ namespace formsolve
                         opening[dofs[i]] = 2 * u[dofs[i]];
                     }
               }
-          double sum = 0, low = std::numeric_limits<double>::max(),
-                 high = -low;
+          double sum = 0, low = std::numeric_limits<double>::max(), high = -low;
           for (const auto &[i, w] : opening)
             {
               sum += w;
@@ -51,7 +50,7 @@ namespace formsolve
               high = std::max(high, w);
             }
           const MPI_Comm comm = dh.get_communicator();
-          out.nodes = Utilities::MPI::sum(opening.size(), comm);
+          out.nodes           = Utilities::MPI::sum(opening.size(), comm);
           if (out.nodes > 0)
             {
               out.mean = Utilities::MPI::sum(sum, comm) / out.nodes;
@@ -64,9 +63,8 @@ namespace formsolve
       return out;
     }
 
-#define INSTANTIATE(dim)                                       \
-  template RingOpening ring_opening(const Release<dim> &,      \
-                                    const Mapping<dim> &);
+#define INSTANTIATE(dim) \
+  template RingOpening ring_opening(const Release<dim> &, const Mapping<dim> &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace springback

@@ -284,43 +284,45 @@ namespace formsolve
 
     namespace
     {
-    template <int dim>
-    std::vector<Support<dim>> slit_supports(const DoFHandler<dim> &dh,
-                                            const Mapping<dim>    &mapping)
-    {
-      // The slit ring keeps the plane x = 0 for y < 0; left are the
-      // translations along y and z and the rotation about x: y and z held
-      // opposite the slit, z at the slit (none of them moves the slit
-      // along x, so the opening does not depend on them).
-      const auto     nodes = node_dofs(dh, mapping);
-      const MPI_Comm comm  = dh.get_communicator();
-      const auto     by_y  = [](const double sign) {
-        return [sign](const Point<dim> &x) { return sign * x[1] - 1e-6 * x[dim - 1]; };
-      };
-      return {{best_node(nodes, by_y(1), comm), "yz"},
-              {best_node(nodes, by_y(-1), comm), "z"}};
-    }
+      template <int dim>
+      std::vector<Support<dim>> slit_supports(const DoFHandler<dim> &dh,
+                                              const Mapping<dim>    &mapping)
+      {
+        // The slit ring keeps the plane x = 0 for y < 0; left are the
+        // translations along y and z and the rotation about x: y and z held
+        // opposite the slit, z at the slit (none of them moves the slit
+        // along x, so the opening does not depend on them).
+        const auto     nodes = node_dofs(dh, mapping);
+        const MPI_Comm comm  = dh.get_communicator();
+        const auto     by_y  = [](const double sign) {
+          return [sign](const Point<dim> &x) {
+            return sign * x[1] - 1e-6 * x[dim - 1];
+          };
+        };
+        return {{best_node(nodes, by_y(1), comm), "yz"},
+                {best_node(nodes, by_y(-1), comm), "z"}};
+      }
 
-    template <int dim>
-    void add_slit_symmetry(const state::State<dim>   &state,
-                           const Mapping<dim>        &mapping,
-                           const DoFHandler<dim>     &dh,
-                           AffineConstraints<double> &constraints)
-    {
-      AffineConstraints<double> symmetry(constraints.get_local_lines());
-      state::add_model_constraints(state.prm.geometry.model,
-                                   state.reference_mapping,
-                                   dh,
-                                   symmetry);
-      std::map<types::global_dof_index, double> y;
-      for (const auto &n : node_dofs(dh, mapping))
-        y[n.index] = n.x[dim == 3 ? 1 : 0];
-      for (const auto &line : symmetry.get_lines())
-        if (y.count(line.index) && y[line.index] <= 0 &&
-            constraints.can_store_line(line.index) &&
-            !constraints.is_constrained(line.index))
-          constraints.add_line(line.index);
-    }
+      template <int dim>
+      void add_slit_symmetry(const state::State<dim>   &state,
+                             const Mapping<dim>        &mapping,
+                             const DoFHandler<dim>     &dh,
+                             AffineConstraints<double> &constraints)
+      {
+        AffineConstraints<double> symmetry(constraints.get_local_lines());
+        state::add_model_constraints(state.prm.geometry.model,
+                                     state.reference_mapping,
+                                     dh,
+                                     symmetry);
+        std::map<types::global_dof_index, double> y;
+        for (const auto &n : node_dofs(dh, mapping))
+          y[n.index] = n.x[dim == 3 ? 1 : 0];
+        for (const auto &line : symmetry.get_lines())
+          if (y.count(line.index) && y[line.index] <= 0 &&
+              constraints.can_store_line(line.index) &&
+              !constraints.is_constrained(line.index))
+            constraints.add_line(line.index);
+      }
     } // namespace
 
     template <int dim>
@@ -351,9 +353,9 @@ namespace formsolve
                                      dh,
                                      constraints);
       const auto supports =
-        slit && state.prm.springback.supports.empty() ?
-          slit_supports(dh, mapping) :
-          choose_supports(dh, mapping, m, state.prm.springback.supports);
+        slit && state.prm.springback.supports.empty()
+          ? slit_supports(dh, mapping)
+          : choose_supports(dh, mapping, m, state.prm.springback.supports);
       add_supports(dh, mapping, m, supports, constraints);
       constraints.close();
       const std::string free = free_rigid_motions(dh, mapping, m, constraints);

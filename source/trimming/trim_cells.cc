@@ -42,7 +42,8 @@ namespace formsolve
       /// The largest |side| at the vertices of a cell the line crosses,
       /// or 0 if it does not cross it.
       template <int dim>
-      double crossing(const TrimShape<dim> &shape, const std::vector<Point<dim>> &x)
+      double crossing(const TrimShape<dim>          &shape,
+                      const std::vector<Point<dim>> &x)
       {
         double low = 1e300, high = -1e300, far = 0;
         for (const auto &p : x)
@@ -136,18 +137,17 @@ namespace formsolve
                          KeptCells                       &kept)
     {
       TrimReport report;
-      report.cells_before  = state.tria.n_global_active_cells();
-      report.volume_before = kept_integrals(
-                               state, KeptCells(state.tria.n_active_cells(), true))
-                               .first;
+      report.cells_before = state.tria.n_global_active_cells();
+      report.volume_before =
+        kept_integrals(state, KeptCells(state.tria.n_active_cells(), true))
+          .first;
       // Each pass halves the cells the line crosses; the passes that only
       // match a kept cell's cut-away neighbours to its level are extra
       // (bounded by the finest level).
       while (true)
         {
-          const bool line = report.passes < trimming.max_passes;
-          const auto [n, far] =
-            flag(state, shape, trimming.tolerance, line);
+          const bool line       = report.passes < trimming.max_passes;
+          const auto [n, far]   = flag(state, shape, trimming.tolerance, line);
           report.edge_deviation = Utilities::MPI::max(far, state.comm);
           if (Utilities::MPI::sum(n, state.comm) == 0)
             break;
@@ -157,9 +157,9 @@ namespace formsolve
           if (line && report.edge_deviation > trimming.tolerance)
             ++report.passes;
         }
-      kept                                    = kept_cells(state, shape);
-      report.cells_after                      = state.tria.n_global_active_cells();
-      unsigned int n_kept                     = 0;
+      kept                = kept_cells(state, shape);
+      report.cells_after  = state.tria.n_global_active_cells();
+      unsigned int n_kept = 0;
       for (const auto &cell : state.tria.active_cell_iterators())
         if (cell->is_locally_owned() && kept[cell->active_cell_index()])
           ++n_kept;
@@ -213,8 +213,7 @@ namespace formsolve
                 const auto other = cell->neighbor(f);
                 // Conforming across the cut (trim_part): the neighbour is
                 // active and as fine as the cell.
-                if (other->is_active() &&
-                    !kept[other->active_cell_index()])
+                if (other->is_active() && !kept[other->active_cell_index()])
                   {
                     Point<dim> unit;
                     for (unsigned int d = 0; d < dim; ++d)
@@ -227,18 +226,18 @@ namespace formsolve
       return centres;
     }
 
-#define INSTANTIATE(dim)                                                    \
-  template TrimReport trim_part(state::State<dim> &,                        \
-                                const TrimShape<dim> &,                     \
-                                const parameters::Trimming &,               \
-                                const state::HistoryUpdate<dim> &,          \
-                                KeptCells &);                               \
-  template KeptCells  kept_cells(const state::State<dim> &,                 \
-                                const TrimShape<dim> &);                    \
-  template std::vector<Point<dim>> cut_faces(const state::State<dim> &,     \
-                                             const KeptCells &);            \
-  template void check_trim_curve(const state::State<dim> &,                 \
-                                 const parameters::Trimming &);
+#define INSTANTIATE(dim)                                                        \
+  template TrimReport              trim_part(state::State<dim> &,               \
+                                             const TrimShape<dim> &,            \
+                                             const parameters::Trimming &,      \
+                                             const state::HistoryUpdate<dim> &, \
+                                             KeptCells &);                      \
+  template KeptCells               kept_cells(const state::State<dim> &,        \
+                                              const TrimShape<dim> &);          \
+  template std::vector<Point<dim>> cut_faces(const state::State<dim> &,         \
+                                             const KeptCells &);                \
+  template void                    check_trim_curve(const state::State<dim> &,  \
+                                                    const parameters::Trimming &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace trimming

@@ -66,13 +66,12 @@ namespace formsolve
           const auto lines = read_on_root<tools::ProfileLines>(comm, [&]() {
             return tools::read_profile_csv(t.curve_file);
           });
-          curve = lines.points;
+          curve            = lines.points;
           parameters::require(curve.size() >= 2,
                               "Trimming/Curve file",
                               t.curve_file + " has fewer than 2 points");
-          closed = curve.size() > 3 &&
-                   curve.front().distance(curve.back()) <=
-                     1e-9 * (1 + curve.front().norm());
+          closed = curve.size() > 3 && curve.front().distance(curve.back()) <=
+                                         1e-9 * (1 + curve.front().norm());
           const bool around = curve_keeps == parameters::CurveSide::inside ||
                               curve_keeps == parameters::CurveSide::outside;
           parameters::require(
@@ -80,8 +79,8 @@ namespace formsolve
             "Trimming/Curve keeps",
             closed ? "the curve in " + t.curve_file +
                        " is closed (its last point is its first): it keeps "
-                       "inside or outside, not left or right" :
-                     "the curve in " + t.curve_file +
+                       "inside or outside, not left or right"
+                   : "the curve in " + t.curve_file +
                        " is open (its last point is not its first): it "
                        "keeps left or right, not inside or outside");
         }
@@ -90,8 +89,8 @@ namespace formsolve
           const auto mesh = read_on_root<tools::SurfaceMesh>(comm, [&]() {
             return tools::read_surface(t.surface_file, t.tolerance);
           });
-          surface = std::make_unique<tools::TriangleSurface>(mesh,
-                                                             t.surface_file);
+          surface =
+            std::make_unique<tools::TriangleSurface>(mesh, t.surface_file);
         }
     }
 
@@ -116,7 +115,7 @@ namespace formsolve
           const Point<2>    &a = curve[i], &b = curve[i + 1];
           const Tensor<1, 2> d = b - a, w = p - a;
           const double       L2 = d * d;
-          const double s = L2 > 0 ? std::clamp((w * d) / L2, 0., 1.) : 0.;
+          const double       s = L2 > 0 ? std::clamp((w * d) / L2, 0., 1.) : 0.;
           if (const double dist = (p - (a + s * d)).norm(); dist < nearest)
             {
               nearest = dist;
@@ -168,10 +167,10 @@ namespace formsolve
           if (surface)
             {
               const double d = surface->closest(p).distance;
-              s = std::min(s,
-                           surface_keeps == parameters::SurfaceSide::behind ?
-                             -d :
-                             d);
+              s =
+                std::min(s,
+                         surface_keeps == parameters::SurfaceSide::behind ? -d
+                                                                          : d);
             }
         }
       return s;

@@ -102,7 +102,7 @@ namespace bent_strip
   /// 3 T (away from the end's Saint-Venant zone), all ranks.
   double curvature(const std::vector<std::pair<double, double>> &u,
                    const MPI_Comm                                comm,
-                   const double end = L / 2)
+                   const double                                  end = L / 2)
   {
     // Normal equations of [1, x^2/2].
     std::vector<double> m(5, 0.);

@@ -45,8 +45,12 @@ namespace
     const VectorType    f = b.problem->unconstrained_residual();
     trimming::KeptCells kept;
     report = trimming::trim_part(b.state, shape, t, b.update, kept);
-    springback::Release<2> release(
-      b.state, *b.state.mapping, b.material, b.law, &f, &kept);
+    springback::Release<2> release(b.state,
+                                   *b.state.mapping,
+                                   b.material,
+                                   b.law,
+                                   &f,
+                                   &kept);
     s = release.solve();
     return curvature(mid_plane(release, b.state),
                      b.state.comm,
@@ -64,13 +68,13 @@ int main(int argc, char **argv)
                               {1, 8, 5, 0, 1e-2},
                               {1, 8, 5, 2, 2e-2}};
   // r = 1: the plane-strain flow stress s' = 2/sqrt(3) sigma0.
-  const double s1 = 2 / std::sqrt(3.) * sigma0, exact = 3 * s1 * (1 - nu * nu) / (E * T);
+  const double s1    = 2 / std::sqrt(3.) * sigma0,
+               exact = 3 * s1 * (1 - nu * nu) / (E * T);
   for (const auto &v : variants)
     {
-      const std::string what = "Q" + std::to_string(v.degree) + " forming, Q" +
-                               std::to_string(v.release ? v.release :
-                                                          v.degree) +
-                               " release: ";
+      const std::string what =
+        "Q" + std::to_string(v.degree) + " forming, Q" +
+        std::to_string(v.release ? v.release : v.degree) + " release: ";
       trimming::TrimReport       r;
       springback::ReleaseSummary s;
       const double kappa = released(v, "x < " + std::to_string(X), r, s);
@@ -79,8 +83,7 @@ int main(int argc, char **argv)
                 << r.cells_after << " cells kept, edge within "
                 << r.edge_deviation << " mm; curvature change " << kappa
                 << ", closed form " << exact << ", relative error "
-                << kappa / exact - 1 << ", imbalance " << s.imbalance
-                << "\n";
+                << kappa / exact - 1 << ", imbalance " << s.imbalance << "\n";
       test::close(what + "spring-forward of the cut piece / closed form",
                   kappa / exact,
                   1,
@@ -96,8 +99,8 @@ int main(int argc, char **argv)
       if (&v != &variants[0])
         continue;
       // A cut that keeps the whole strip: as without a cut.
-      Bending      b(strip(1, v));
-      const auto   made = b.release();
+      Bending    b(strip(1, v));
+      const auto made = b.release();
       made->solve();
       const double plain = curvature(mid_plane(*made, b.state), b.state.comm);
       const double whole = released(v, "x < 100", r, s);

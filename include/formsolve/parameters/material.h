@@ -69,7 +69,7 @@ namespace formsolve
       // NaN until given.
       double young_modulus = std::numeric_limits<double>::quiet_NaN(); // MPa
       double poisson_ratio = 0.3;                                      // (-)
-      double density = std::numeric_limits<double>::quiet_NaN(); // kg/m^3
+      double density       = std::numeric_limits<double>::quiet_NaN(); // kg/m^3
       Anisotropy anisotropy; // yield criterion and its data
 
       // Ductile fracture: no criterion unless one is chosen with the

@@ -31,9 +31,9 @@ namespace formsolve
       std::vector<std::vector<double>> measure_points;
       /// The split-ring test: the half model's symmetry plane x = 0 opens
       /// where y > 0 (a slit along the generator at +y).
-      bool                             slit      = false;
-      double                           tolerance = 1e-8; // |r| / |f_release|
-      unsigned int                     max_iterations = 30;
+      bool         slit           = false;
+      double       tolerance      = 1e-8; // |r| / |f_release|
+      unsigned int max_iterations = 30;
       /// The end state is a sound start where the plastic strain exceeds
       /// this many yield strains sigma_y/E (doc/theory.md, section 12).
       double sound_strain_ratio = 10;

@@ -43,8 +43,8 @@ namespace formsolve
       CurveSide             curve_side = CurveSide::inside;
       std::string           surface_file; // STL or gmsh
       SurfaceSide           surface_side = SurfaceSide::behind;
-      double                tolerance    = 0.25; // mm, of the cut edge
-      unsigned int          max_passes   = 4;   // refinement passes
+      double                tolerance    = 0.5; // mm, of the cut edge
+      unsigned int          max_passes   = 4;    // refinement passes
 
       bool any() const
       {

@@ -48,11 +48,10 @@ namespace formsolve
     /// Which active cells are written: @p out writes the locally owned
     /// ones @p part selects.
     template <int dim>
-    void select_cells(
-      dealii::DataOut<dim> &out,
-      const std::function<
-        bool(const typename dealii::Triangulation<dim>::active_cell_iterator &)>
-        &part);
+    void
+    select_cells(dealii::DataOut<dim>                                    &out,
+                 const std::function<bool(const typename dealii::Triangulation<
+                                          dim>::active_cell_iterator &)> &part);
 
     template <int dim>
     class VtuWriter
@@ -74,15 +73,14 @@ namespace formsolve
       /// Writes <base>_<step>.pvtu of the locally owned cells @p part
       /// selects (a trimmed part), outside the time series; returns the
       /// file's name.
-      std::string write_part(
-        const unsigned int             step,
-        const dealii::DoFHandler<dim> &dof_handler,
-        const dealii::Mapping<dim>    &mapping,
-        const OutputFields<dim>       &fields,
-        const std::function<bool(
-          const typename dealii::Triangulation<dim>::active_cell_iterator &)>
-                          &part,
-        const std::string &base) const;
+      std::string
+      write_part(const unsigned int             step,
+                 const dealii::DoFHandler<dim> &dof_handler,
+                 const dealii::Mapping<dim>    &mapping,
+                 const OutputFields<dim>       &fields,
+                 const std::function<bool(const typename dealii::Triangulation<
+                                          dim>::active_cell_iterator &)> &part,
+                 const std::string &base) const;
       /// The (time, file) records of solution.pvd and revolved.pvd, for
       /// checkpoints.
       using Records = std::vector<std::pair<double, std::string>>;

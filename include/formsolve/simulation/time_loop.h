@@ -29,8 +29,8 @@
 #include <formsolve/springback/measure_points.h>
 #include <formsolve/springback/release.h>
 #include <formsolve/springback/ring_opening.h>
-#include <formsolve/trimming/trim_cells.h>
 #include <formsolve/state/state.h>
+#include <formsolve/trimming/trim_cells.h>
 
 #include <chrono>
 #include <functional>

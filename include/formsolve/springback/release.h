@@ -125,16 +125,16 @@ namespace formsolve
       /// The displacement on dh from the part's.
       void spread_displacement();
 
-      const state::State<dim>               &state;
-      const dealii::Mapping<dim>            &mapping;
-      const material::ReleaseLaw            &law;
-      const parameters::Run                 &prm;
-      dealii::FESystem<dim>                  fe;
+      const state::State<dim>    &state;
+      const dealii::Mapping<dim> &mapping;
+      const material::ReleaseLaw &law;
+      const parameters::Run      &prm;
+      dealii::FESystem<dim>       fe;
       /// fe on the part's cells, nothing on those cut away.
-      dealii::hp::FECollection<dim>          part_fe;
-      dealii::QGauss<dim>                    quadrature;
-      dealii::DoFHandler<dim>                dh, part;
-      const trimming::KeptCells             *kept;
+      dealii::hp::FECollection<dim> part_fe;
+      dealii::QGauss<dim>           quadrature;
+      dealii::DoFHandler<dim>       dh, part;
+      const trimming::KeptCells    *kept;
       /// The part's: hanging nodes, symmetry planes, supports.
       dealii::AffineConstraints<double>      constraints;
       EndState<dim>                          end;
@@ -142,8 +142,8 @@ namespace formsolve
       dealii::TrilinosWrappers::SparseMatrix matrix;
       const VectorType                      *end_forces;
       /// On the part's DoFs, except u_ghost and u_full (dh's).
-      VectorType u, residual, defect, u_ghost, u_full;
-      VectorType part_ghost; // u, ghosted
+      VectorType            u, residual, defect, u_ghost, u_full;
+      VectorType            part_ghost; // u, ghosted
       dealii::Vector<float> cell_residual, cell_end, cell_mean, cell_yielded;
     };
   } // namespace springback

@@ -11,8 +11,8 @@ namespace formsolve
   {
     struct RingOpening
     {
-      unsigned int nodes = 0;      // of the slit face
-      double       mean = 0;       // mm, > 0: the ring opens
+      unsigned int nodes = 0;         // of the slit face
+      double       mean  = 0;         // mm, > 0: the ring opens
       double       low = 0, high = 0; // over the face's nodes
     };
 

@@ -22,10 +22,10 @@ namespace formsolve
       unsigned int passes = 0; // refinement passes along the line
       /// Largest distance from the trim line of a node of a cell it
       /// crosses, after refinement (mm): the cut edge lies within it.
-      double       edge_deviation = 0;
-      double       cells_before = 0, cells_after = 0, cells_kept = 0;
-      double       volume_before = 0, volume_kept = 0; // mm^3, the model
-      double       strain_kept = 0; // int eps dV over the kept cells
+      double edge_deviation = 0;
+      double cells_before = 0, cells_after = 0, cells_kept = 0;
+      double volume_before = 0, volume_kept = 0; // mm^3, the model
+      double strain_kept = 0; // int eps dV over the kept cells
     };
 
     /// Kept (true) or cut away, by active cell index (locally owned and

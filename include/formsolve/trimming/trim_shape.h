@@ -9,8 +9,9 @@
 #include <formsolve/model/model.h>
 #include <formsolve/parameters/trimming.h>
 
-#include <memory>
 #include <mpi.h>
+
+#include <memory>
 #include <vector>
 
 namespace formsolve
@@ -37,10 +38,7 @@ namespace formsolve
       /// coordinates, mm): > 0 where every cut keeps the part.
       double side(const dealii::Point<dim> &p) const;
 
-      bool empty() const
-      {
-        return planes.empty() && curve.empty() && !surface;
-      }
+      bool empty() const { return planes.empty() && curve.empty() && !surface; }
 
     private:
       struct Plane
@@ -50,11 +48,11 @@ namespace formsolve
       };
       double curve_side(const dealii::Point<2> &p) const;
 
-      std::vector<Plane>              planes;
-      std::vector<dealii::Point<2>>   curve; // plan view (x, y)
-      bool                            closed = false;
-      parameters::CurveSide           curve_keeps;
-      parameters::SurfaceSide         surface_keeps;
+      std::vector<Plane>                      planes;
+      std::vector<dealii::Point<2>>           curve; // plan view (x, y)
+      bool                                    closed = false;
+      parameters::CurveSide                   curve_keeps;
+      parameters::SurfaceSide                 surface_keeps;
       std::unique_ptr<tools::TriangleSurface> surface;
     };
   } // namespace trimming
