@@ -44,7 +44,7 @@ namespace formsolve
       std::string           surface_file; // STL or gmsh
       SurfaceSide           surface_side = SurfaceSide::behind;
       double                tolerance    = 0.5; // mm, of the cut edge
-      unsigned int          max_passes   = 4;    // refinement passes
+      unsigned int          max_passes   = 4;   // refinement passes
 
       bool any() const
       {
