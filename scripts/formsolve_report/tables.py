@@ -74,6 +74,9 @@ def run_rows(run, split):
     dofs = number(s, "dofs")
     rows = [("model", f"{run.model} ({s.get('ranks', '?')} rank(s)" +
              (f", {dofs:.0f} DoFs)" if dofs else ")"))]
+    if s.get("start_from"):
+        rows.append(("next operation", f"the part of {s['start_from']} ({s.get('start_from_shape', '?')}); "
+                     "strains, thickness and damage include the earlier operation's"))
     if split:
         rows.append(("split", f"yes: {split['measure']} at punch travel {mm(split['travel'])}, at {split['location']}"))
     else:

@@ -69,6 +69,19 @@ namespace formsolve
             "the modelled part (quarter: x >= 0, y >= 0; half: x >= 0); it is "
             "extruded through the thickness. A relative path is taken from the "
             ".prm file that names it (from the working directory with --set).");
+      d.add(
+        "Start from",
+        start_from,
+        text("a folder path (relative to the working directory)"),
+        "A next operation (redraw, restrike, flanging): the Output directory "
+        "of an earlier finished run, whose part this run forms further with "
+        "its own tools and stroke. The part keeps its mesh, shape (sprung if "
+        "the earlier run released it: Springback/Enabled), thickness, "
+        "equivalent strain, damage and stresses; Geometry, Mesh and Material "
+        "must be those of the earlier run. The tools are placed as for a new "
+        "blank (Gap from the planes z = 0 and z = Thickness), so tools that "
+        "work on the formed part move by Gap or Mesh offset. Nothing is "
+        "written into that folder. Empty: a new blank.");
     }
 
 

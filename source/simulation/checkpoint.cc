@@ -6,6 +6,7 @@
 #include <formsolve/geometry/blank_mesh.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/simulation/checkpoint.h>
+#include <formsolve/simulation/parameter_listing.h>
 
 #include <filesystem>
 #include <fstream>
@@ -23,104 +24,6 @@ namespace formsolve
     namespace
     {
       using CellValues = std::vector<std::vector<double>>;
-
-      /// The listing without the Output subsection: a run may be resumed
-      /// with other output settings.
-      std::string without_output(const std::string &listing)
-      {
-        std::istringstream in(listing);
-        std::ostringstream out;
-        std::string        line;
-        int                depth = 0, skip_from = -1;
-        while (std::getline(in, line))
-          {
-            const auto first = line.find_first_not_of(" \t");
-            const auto word =
-              first == std::string::npos ? "" : line.substr(first);
-            if (word.rfind("subsection", 0) == 0)
-              {
-                if (skip_from < 0 && word == "subsection Output")
-                  skip_from = depth;
-                ++depth;
-              }
-            else if (word == "end")
-              {
-                --depth;
-                if (depth == skip_from)
-                  {
-                    skip_from = -1;
-                    continue;
-                  }
-              }
-            if (skip_from < 0 && !word.empty() && word[0] != '#')
-              out << word << '\n';
-          }
-        return out.str();
-      }
-
-      /// "Sub/Sub/Entry" -> value of a parameter listing, the Output
-      /// subsection left out.
-      std::map<std::string, std::string> entries(const std::string &listing)
-      {
-        std::map<std::string, std::string> e;
-        std::istringstream                 in(without_output(listing));
-        std::vector<std::string>           path;
-        for (std::string line; std::getline(in, line);)
-          {
-            if (line.rfind("subsection ", 0) == 0)
-              path.push_back(line.substr(11));
-            else if (line == "end" && !path.empty())
-              path.pop_back();
-            else if (line.rfind("set ", 0) == 0)
-              {
-                const auto eq = line.find('=');
-                if (eq == std::string::npos)
-                  continue;
-                std::string name  = line.substr(4, eq - 4),
-                            value = line.substr(eq + 1);
-                value             = value.substr(0, value.find(" # default:"));
-                auto trim         = [](std::string &t) {
-                  t.erase(0, t.find_first_not_of(" \t"));
-                  t.erase(t.find_last_not_of(" \t") + 1);
-                };
-                trim(name);
-                trim(value);
-                std::string key;
-                for (const auto &p : path)
-                  key += p + "/";
-                e[key + name] = value;
-              }
-          }
-        return e;
-      }
-
-      /// The entries whose values differ, with both values (at most ten).
-      std::string differences(const std::string &saved, const std::string &now)
-      {
-        const auto         a = entries(saved), b = entries(now);
-        std::ostringstream s;
-        unsigned int       n   = 0;
-        auto               say = [&](const std::string &key,
-                       const std::string &was,
-                       const std::string &is) {
-          if (n++ < 10)
-            s << (n > 1 ? "; " : "") << key << " = " << was
-              << " in the checkpoint, " << is << " now";
-        };
-        // Changed values first, then entries only one listing has.
-        for (const auto &[key, value] : a)
-          if (const auto it = b.find(key); it != b.end() && it->second != value)
-            say(key, "'" + value + "'", "'" + it->second + "'");
-        for (const auto &[key, value] : a)
-          if (!b.count(key))
-            say(key, "'" + value + "'", "no such entry");
-        for (const auto &[key, value] : b)
-          if (!a.count(key))
-            say(key, "absent", "'" + value + "'");
-        if (n > 10)
-          s << "; and " << n - 10 << " more";
-        return s.str();
-      }
 
       template <int dim>
       std::string text(const Tensor<1, dim> &t)
@@ -161,7 +64,8 @@ namespace formsolve
 
     template <int dim>
     void Checkpoint<dim>::save(const State<dim> &state,
-                               const Metadata   &meta) const
+                               const Metadata   &meta,
+                               const VectorType *sprung) const
     {
       const bool root = Utilities::MPI::this_mpi_process(state.comm) == 0;
       const std::string fresh = directory + "/checkpoint.new",
@@ -177,7 +81,12 @@ namespace formsolve
       // Fields and history attached to the mesh, in this order on loading.
       parallel::distributed::SolutionTransfer<dim, VectorType> fields(
         state.dof_handler);
-      const auto                      values = state.transferable_fields();
+      auto values = state.transferable_fields();
+      if (sprung)
+        {
+          values.emplace_back(state.owned, state.relevant, state.comm);
+          values.back() = *sprung;
+        }
       std::vector<const VectorType *> in;
       for (const auto &v : values)
         in.push_back(&v);
@@ -206,6 +115,7 @@ namespace formsolve
           all["step"]         = std::to_string(state.step);
           all["coarse_cells"] = std::to_string(state.tria.n_cells(0));
           all["fields"]       = std::to_string(values.size());
+          all["sprung"]       = sprung ? "1" : "0";
           for (unsigned int t = 0; t < state.tools.size(); ++t)
             {
               const auto key         = "tool." + std::to_string(t);
@@ -241,28 +151,19 @@ namespace formsolve
       MPI_Barrier(state.comm);
     }
 
-    template <int dim>
-    Metadata Checkpoint<dim>::load(State<dim> &state) const
+    std::string newest_checkpoint(const std::string &directory)
     {
-      // The newest complete one: a save interrupted after its rename step
-      // leaves checkpoint.new or checkpoint.old complete.
-      std::string from;
+      // A save interrupted after its rename step leaves checkpoint.new or
+      // checkpoint.old complete.
       for (const auto *name :
            {"checkpoint", "checkpoint.new", "checkpoint.old"})
-        if (from.empty() && fs::exists(directory + "/" + name + "/complete"))
-          from = directory + "/" + name;
-      AssertThrow(!from.empty(),
-                  ExcMessage("--resume: there is no complete checkpoint in " +
-                             directory + " (Output/Checkpoint interval)"));
-      std::ifstream      p(from + "/parameters.prm");
-      std::ostringstream saved;
-      saved << p.rdbuf();
-      AssertThrow(without_output(saved.str()) == without_output(parameters),
-                  ExcMessage("--resume: the checkpoint in " + from +
-                             " was written by another case; its parameters (" +
-                             from + "/parameters.prm) differ from these: " +
-                             differences(saved.str(), parameters) +
-                             " (only Output entries may change on resume)"));
+        if (fs::exists(directory + "/" + name + "/complete"))
+          return directory + "/" + name;
+      return "";
+    }
+
+    Metadata read_metadata(const std::string &from)
+    {
       Metadata      meta;
       std::ifstream m(from + "/meta.txt");
       std::string   line;
@@ -272,27 +173,37 @@ namespace formsolve
           if (eq != std::string::npos)
             meta[line.substr(0, eq)] = line.substr(eq + 3);
         }
+      return meta;
+    }
 
+    std::string read_parameters(const std::string &from)
+    {
+      std::ifstream      p(from + "/parameters.prm");
+      std::ostringstream saved;
+      saved << p.rdbuf();
+      return saved.str();
+    }
+
+    template <int dim>
+    std::vector<VectorType> load_part(const std::string &from,
+                                      const Metadata    &meta,
+                                      State<dim>        &state,
+                                      const std::string &who)
+    {
       geometry::create_coarse_blank_mesh(state.prm.geometry,
                                          state.prm.mesh,
                                          state.tria);
       AssertThrow(meta.count("coarse_cells") &&
                     std::stoul(meta.at("coarse_cells")) ==
                       state.tria.n_cells(0),
-                  ExcMessage("--resume: the checkpoint in " + from +
+                  ExcMessage(who + ": the checkpoint in " + from +
                              " was written by a formsolve with another "
                              "coarse mesh; start the run again"));
-      AssertThrow(meta.count("fields") &&
-                    std::stoul(meta.at("fields")) ==
-                      2 + State<dim>::record_fields * state.tools.size(),
-                  ExcMessage("--resume: the checkpoint in " + from +
-                             " was written by a formsolve that stores "
-                             "other fields; start the run again"));
       state.tria.load(from + "/mesh");
       state.setup_dofs();
       parallel::distributed::SolutionTransfer<dim, VectorType> fields(
         state.dof_handler);
-      std::vector<VectorType>   values(state.n_transferable_fields(),
+      std::vector<VectorType>   values(std::stoul(meta.at("fields")),
                                      VectorType(state.owned, state.comm));
       std::vector<VectorType *> out;
       for (auto &v : values)
@@ -310,13 +221,40 @@ namespace formsolve
             auto        q = state.history.get_data(cell);
             const auto  n = q[0]->number_of_values();
             AssertThrow(h.size() == n * q.size(),
-                        ExcMessage(
-                          "--resume: the checkpoint in " + from +
-                          " does not fit this program's history data"));
+                        ExcMessage(who + ": the checkpoint in " + from +
+                                   " does not fit this program's history "
+                                   "data"));
             for (unsigned int i = 0; i < q.size(); ++i)
               q[i]->unpack_values(std::vector<double>(h.begin() + i * n,
                                                       h.begin() + (i + 1) * n));
           }
+      return values;
+    }
+
+    template <int dim>
+    Metadata Checkpoint<dim>::load(State<dim> &state) const
+    {
+      const std::string from = newest_checkpoint(directory);
+      AssertThrow(!from.empty(),
+                  ExcMessage("--resume: there is no complete checkpoint in " +
+                             directory + " (Output/Checkpoint interval)"));
+      const std::string saved = read_parameters(from);
+      AssertThrow(without_output(saved) == without_output(parameters),
+                  ExcMessage("--resume: the checkpoint in " + from +
+                             " was written by another case; its parameters (" +
+                             from + "/parameters.prm) differ from these: " +
+                             differences(saved, parameters, "the checkpoint") +
+                             " (only Output entries may change on resume)"));
+      const Metadata     meta = read_metadata(from);
+      const unsigned int n    = state.n_transferable_fields();
+      AssertThrow(meta.count("fields") &&
+                    std::stoul(meta.at("fields")) ==
+                      n + (meta.count("sprung") && meta.at("sprung") == "1"),
+                  ExcMessage("--resume: the checkpoint in " + from +
+                             " was written by a formsolve that stores "
+                             "other fields; start the run again"));
+      auto values = load_part(from, meta, state, "--resume");
+      values.resize(n); // without the sprung shape
       state.set_transferable_fields(values);
 
       state.time = std::stod(meta.at("time"));
@@ -341,7 +279,12 @@ namespace formsolve
       return meta;
     }
 
-#define INSTANTIATE(dim) template class Checkpoint<dim>;
+#define INSTANTIATE(dim)                                          \
+  template class Checkpoint<dim>;                                 \
+  template std::vector<VectorType> load_part(const std::string &, \
+                                             const Metadata &,    \
+                                             State<dim> &,        \
+                                             const std::string &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace simulation

@@ -152,7 +152,7 @@ namespace formsolve
         }
       else
         {
-          state.create_mesh();
+          make_part();
           step_solver.reinit();
           check_initial_scene();
         }
@@ -185,6 +185,12 @@ namespace formsolve
               << advice << " (scripts/formsolve-run does)\n";
       for (const auto &note : state.tools.notes())
         pcout << "note: " << note << "\n";
+      if (earlier)
+        pcout << "next operation: the part of " << earlier->folder << " ("
+              << (earlier->sprung ? "sprung back" : "as formed") << ", after "
+              << earlier->steps << " steps to punch travel " << earlier->travel
+              << " mm: " << earlier->end_reason
+              << "); tools and time start afresh" << std::endl;
       if (resume)
         pcout << "resumed from the checkpoint at step " << state.step
               << ", punch travel " << state.tools.punch_travel() << " mm"
@@ -199,10 +205,26 @@ namespace formsolve
         start_refinement(resume);
       if (!resume && prm.output.interval > 0)
         write_output();
-      if (!resume && state.step == 0 &&
+      // A coarser mesh would average the earlier run's history.
+      if (!resume && !earlier && state.step == 0 &&
           prm.nonlinear.first_step_start ==
             parameters::FirstStepStart::coarser_mesh)
         start_from_coarser_mesh(summary);
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::make_part()
+    {
+      if (prm.geometry.start_from.empty())
+        {
+          state.create_mesh();
+          return;
+        }
+      earlier =
+        std::make_unique<EarlierRun>(find_earlier_run(prm.geometry.start_from,
+                                                      prm.output.directory,
+                                                      parameter_listing()));
+      load_earlier_part(*earlier, state);
     }
 
     template <int dim>
@@ -235,12 +257,17 @@ namespace formsolve
     }
 
     template <int dim>
-    void TimeLoop<dim>::save_checkpoint(RunSummary &summary)
+    void TimeLoop<dim>::save_checkpoint(RunSummary &summary, const bool end)
     {
       TimerOutput::Scope t(timer, "checkpoint");
       step_solver.release_factors();
-      summary.wall_time = seconds();
-      checkpoint->save(state, loop_metadata(summary));
+      summary.wall_time    = seconds();
+      auto meta            = loop_metadata(summary);
+      meta["punch_travel"] = exact_text(state.tools.punch_travel());
+      // A next operation starts only from a finished, untrimmed part.
+      meta["finished"] = end && !summary.solver_failed ? "1" : "0";
+      meta["trimmed"]  = kept ? "1" : "0";
+      checkpoint->save(state, meta, end ? sprung_shape.get() : nullptr);
       last_checkpoint = seconds();
     }
 

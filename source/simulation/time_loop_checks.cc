@@ -194,7 +194,7 @@ namespace formsolve
     template <int dim>
     void TimeLoop<dim>::validate_scene()
     {
-      state.create_mesh();
+      make_part();
       check_initial_scene();
       for (const auto &note : state.tools.notes())
         pcout << "note: " << note << "\n";

@@ -235,7 +235,6 @@ namespace formsolve
     {
       if (prm.output.interval > 0)
         write_output(/*last=*/true);
-      save_checkpoint(summary);
 
       summary.wall_time = seconds();
       sheet.measure(state, damage);
@@ -259,6 +258,7 @@ namespace formsolve
       if (prm.springback.enabled && !summary.solver_failed &&
           trim_failure.empty())
         spring_back();
+      save_checkpoint(summary, /*end=*/true);
       measure_memory(summary);
       write_summary(summary);
       pcout << "done: " << state.step << " steps, " << summary.newton_iterations

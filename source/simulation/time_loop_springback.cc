@@ -48,6 +48,8 @@ namespace formsolve
             kept.get());
           const auto s = release.solve();
           springback::write_sprung_part(release, state, prm.output.directory);
+          sprung_shape = std::make_unique<VectorType>(
+            springback::sprung_displacement(release, state));
           measure_section(release);
           at_points = springback::springback_at(release,
                                                 state,

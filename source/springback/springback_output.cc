@@ -79,10 +79,29 @@ namespace formsolve
                                                state.comm);
     }
 
+    template <int dim>
+    VectorType sprung_displacement(const Release<dim>      &release,
+                                   const state::State<dim> &state)
+    {
+      AffineConstraints<double> hanging(state.relevant);
+      DoFTools::make_hanging_node_constraints(state.dof_handler, hanging);
+      hanging.close();
+      VectorType u(state.owned, state.comm);
+      FETools::interpolate(release.dof_handler(),
+                           release.displacement(),
+                           state.dof_handler,
+                           hanging,
+                           u);
+      u += state.displacement;
+      return u;
+    }
+
 #define INSTANTIATE(dim)                                            \
   template std::string write_sprung_part(const Release<dim> &,      \
                                          const state::State<dim> &, \
-                                         const std::string &);
+                                         const std::string &);      \
+  template VectorType  sprung_displacement(const Release<dim> &,    \
+                                           const state::State<dim> &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace springback

@@ -243,6 +243,17 @@ namespace formsolve
     }
 
     template <int dim>
+    void State<dim>::set_shape(const VectorType &shape)
+    {
+      velocity     = 0;
+      displacement = shape;
+      constraints.distribute(displacement);
+      velocity_ghost     = velocity;
+      displacement_ghost = displacement;
+      update_mapping();
+    }
+
+    template <int dim>
     double State<dim>::max_lateral_distance(const unsigned int t) const
     {
       double d = -std::numeric_limits<double>::max();

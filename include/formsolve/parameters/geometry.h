@@ -29,6 +29,9 @@ namespace formsolve
       double       blank_width    = 40;   // mm, full width along y
       double       thickness      = 0.78; // mm
       std::string  mesh_file;             // gmsh .msh or .geo (2-D planform)
+      /// An earlier run's Output directory whose finished part this run
+      /// forms further (a next operation); empty: a new blank.
+      std::string start_from;
 
       /// Declares the entries, bound to these members.
       void declare(Declarations &d);

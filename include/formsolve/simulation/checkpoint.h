@@ -7,6 +7,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace formsolve
 {
@@ -21,6 +22,24 @@ namespace formsolve
     /// @p x as text that reads back to the same double (17 digits).
     std::string exact_text(const double x);
 
+    /// The newest complete checkpoint folder in @p directory, "" if none.
+    std::string newest_checkpoint(const std::string &directory);
+    /// The time loop's values of checkpoint folder @p from (meta.txt).
+    Metadata read_metadata(const std::string &from);
+    /// The parameter listing of the run that wrote checkpoint @p from.
+    std::string read_parameters(const std::string &from);
+
+    /// The mesh, history and nodal fields of checkpoint @p from (with its
+    /// @p meta) into @p state, whose triangulation must be empty and whose
+    /// Geometry and Mesh must be the writer's; returns the nodal fields as
+    /// saved (State::transferable_fields() of the writer, then its sprung
+    /// displacement if meta "sprung" is 1). Errors name @p who.
+    template <int dim>
+    std::vector<VectorType> load_part(const std::string &from,
+                                      const Metadata    &meta,
+                                      State<dim>        &state,
+                                      const std::string &who);
+
     template <int dim>
     class Checkpoint
     {
@@ -32,8 +51,12 @@ namespace formsolve
 
       /// Writes a complete checkpoint (collective) into checkpoint.new and
       /// renames it to checkpoint when every rank has finished, so that a
-      /// process killed at any moment leaves the last complete one.
-      void save(const State<dim> &state, const Metadata &meta) const;
+      /// process killed at any moment leaves the last complete one. With
+      /// @p sprung (owned, on the state's DoFs), the sprung part's
+      /// displacement is saved after the state's fields.
+      void save(const State<dim> &state,
+                const Metadata   &meta,
+                const VectorType *sprung = nullptr) const;
 
       /// Loads the newest complete checkpoint into @p state, whose
       /// triangulation must be empty; returns the time loop's values.

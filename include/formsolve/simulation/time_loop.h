@@ -25,6 +25,7 @@
 #include <formsolve/postprocess/vtu_writer.h>
 #include <formsolve/refinement/mesh_refinement.h>
 #include <formsolve/simulation/checkpoint.h>
+#include <formsolve/simulation/start_from.h>
 #include <formsolve/springback/channel_measures.h>
 #include <formsolve/springback/measure_points.h>
 #include <formsolve/springback/release.h>
@@ -150,7 +151,11 @@ namespace formsolve
       void note_ironing(const contact::ContactStatistics<dim> &s,
                         const double                           punch_force,
                         RunSummary                            &summary);
-      void save_checkpoint(RunSummary &summary);
+      /// @p end: the run's end (after trimming and springback), which a
+      /// next operation can start from (Geometry/Start from).
+      void save_checkpoint(RunSummary &summary, const bool end = false);
+      /// The part: a new blank, or the earlier run's (Geometry/Start from).
+      void make_part();
       /// Whether a checkpoint is due after this step: by Output/Checkpoint
       /// interval, or by Checkpoint wall time on rank 0's clock.
       bool checkpoint_due() const;
@@ -295,6 +300,11 @@ namespace formsolve
       std::unique_ptr<trimming::TrimReport> trimmed;
       std::string                           trim_failure;
       double                                trim_seconds = 0;
+      /// The sprung part's displacement on the state's DoFs (owned), once
+      /// the release succeeded: what a next operation starts from.
+      std::unique_ptr<VectorType> sprung_shape;
+      /// The earlier run this one continues (Geometry/Start from).
+      std::unique_ptr<EarlierRun> earlier;
       /// The split ring's opening (Springback/Slit).
       std::unique_ptr<springback::RingOpening> opening;
       /// The step solver's body forces are those of the current mesh's

@@ -19,5 +19,12 @@ namespace formsolve
     std::string write_sprung_part(const Release<dim>      &release,
                                   const state::State<dim> &state,
                                   const std::string       &directory);
+
+    /// The sprung part's displacement on the state's DoFs (owned): the
+    /// forming's plus the release's, interpolated to the forming's element
+    /// (the shape a next operation starts from).
+    template <int dim>
+    state::VectorType sprung_displacement(const Release<dim>      &release,
+                                          const state::State<dim> &state);
   } // namespace springback
 } // namespace formsolve

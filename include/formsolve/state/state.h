@@ -103,6 +103,11 @@ namespace formsolve
       /// the current mesh, after setup_dofs()) back.
       void set_transferable_fields(const std::vector<VectorType> &fields);
 
+      /// The part at rest in the shape @p shape (a displacement on the
+      /// current DoFs, owned; an earlier run's end), with a fresh contact
+      /// state (after setup_dofs()).
+      void set_shape(const VectorType &shape);
+
       /// Largest lateral distance (mm) of any sheet surface node from the
       /// edge of tool @p t's face (positive: on the face's side), all ranks.
       double max_lateral_distance(const unsigned int t) const;

@@ -1,0 +1,108 @@
+#include <formsolve/model/dimensions.h>
+#include <formsolve/simulation/parameter_listing.h>
+#include <formsolve/simulation/start_from.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace formsolve
+{
+  namespace simulation
+  {
+    using namespace dealii;
+    namespace fs = std::filesystem;
+
+    namespace
+    {
+      const std::string entry = "Geometry/Start from";
+
+      /// The value of @p key in @p meta, "" if absent.
+      std::string value(const Metadata &meta, const std::string &key)
+      {
+        const auto it = meta.find(key);
+        return it == meta.end() ? "" : it->second;
+      }
+
+      /// The earlier run's end_reason from its run-summary.txt.
+      std::string end_reason(const std::string &folder)
+      {
+        std::ifstream in(folder + "/run-summary.txt");
+        for (std::string line; std::getline(in, line);)
+          if (line.rfind("end_reason = ", 0) == 0)
+            return line.substr(13);
+        return "";
+      }
+    } // namespace
+
+    EarlierRun find_earlier_run(const std::string &folder,
+                                const std::string &output_directory,
+                                const std::string &listing)
+    {
+      EarlierRun r;
+      r.folder = folder;
+      std::error_code ec;
+      AssertThrow(fs::is_directory(folder, ec),
+                  ExcMessage(entry + ": '" + folder + "' is not a folder"));
+      AssertThrow(fs::weakly_canonical(folder, ec) !=
+                    fs::weakly_canonical(output_directory, ec),
+                  ExcMessage(
+                    "Output/Output directory: '" + output_directory +
+                    "' is the folder " + entry +
+                    " reads; a next operation never writes into it (choose "
+                    "another Output directory)"));
+      r.checkpoint = newest_checkpoint(folder);
+      AssertThrow(!r.checkpoint.empty(),
+                  ExcMessage(entry + ": '" + folder +
+                             "' holds no finished formsolve run (no complete "
+                             "checkpoint in it)"));
+      const Metadata meta = read_metadata(r.checkpoint);
+      AssertThrow(value(meta, "finished") == "1",
+                  ExcMessage(
+                    entry + ": the run in '" + folder +
+                    "' has not finished (its checkpoint is of step " +
+                    value(meta, "step") +
+                    ", during the run, or the run ended in a solver failure); "
+                    "let it finish (--resume) first"));
+      AssertThrow(value(meta, "trimmed") != "1",
+                  ExcMessage(
+                    entry + ": the run in '" + folder +
+                    "' trimmed its part (Trimming); a next operation on a "
+                    "trimmed part is not available yet (the mesh would "
+                    "have to be rebuilt without the cells cut away): start "
+                    "from a run without Trimming"));
+      const std::string diff = differences(read_parameters(r.checkpoint),
+                                           listing,
+                                           "the earlier run",
+                                           {"Geometry/", "Mesh/", "Material/"},
+                                           {entry});
+      AssertThrow(diff.empty(),
+                  ExcMessage(entry + ": the part of '" + folder +
+                             "' was formed with other Geometry, Mesh or "
+                             "Material entries, which a next operation must "
+                             "keep: " +
+                             diff));
+      r.steps      = std::stoul(value(meta, "step"));
+      r.travel     = std::stod(value(meta, "punch_travel"));
+      r.sprung     = value(meta, "sprung") == "1";
+      r.end_reason = end_reason(folder);
+      return r;
+    }
+
+    template <int dim>
+    void load_earlier_part(const EarlierRun &earlier, State<dim> &state)
+    {
+      const Metadata meta   = read_metadata(earlier.checkpoint);
+      const auto     fields = load_part(earlier.checkpoint,
+                                    meta,
+                                    state,
+                                    entry + " = " + earlier.folder);
+      state.set_shape(earlier.sprung ? fields.back() : fields[1]);
+      state.update_contact_areas();
+    }
+
+#define INSTANTIATE(dim) \
+  template void load_earlier_part(const EarlierRun &, State<dim> &);
+    FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
+#undef INSTANTIATE
+  } // namespace simulation
+} // namespace formsolve
