@@ -18,6 +18,8 @@ namespace formsolve
                                            ToolShape::rounded_rectangle},
                                           {"flat", ToolShape::flat},
                                           {"mesh", ToolShape::mesh}};
+      const Choice<GapFrom>   gap_from_names{{"blank", GapFrom::blank},
+                                           {"part", GapFrom::part}};
     } // namespace
 
     std::string tool_key(const std::string &name)
@@ -69,6 +71,15 @@ namespace formsolve
             "Initial distance between the tool face and the sheet surface "
             "it acts on (mm). The die is below the sheet (z <= 0), punch "
             "and blank holder above (z >= thickness).");
+      d.add("Gap measured from",
+            gap_from,
+            gap_from_names,
+            "blank: Gap is measured from the blank's planes (z = 0 for tools "
+            "below the sheet, z = Thickness above). part: the tool, placed "
+            "first as for blank, moves along z until the smallest distance "
+            "between it and the nodes of the part's surface facing it is Gap "
+            "(a next operation's tools against the formed part, "
+            "Geometry/Start from; for a flat blank the same as blank).");
       d.add("Friction coefficient",
             friction_coefficient,
             number("-", 0, 1.5),
@@ -129,6 +140,10 @@ namespace formsolve
         return;
       const std::string e = "Tools/" + name + "/";
       require(std::isfinite(gap), e + "Gap", "must be a finite number (mm)");
+      require(gap_from == GapFrom::blank || gap >= 0,
+              e + "Gap",
+              "must not be negative with 'Gap measured from' = part (the "
+              "tool would start inside the part)");
       if (shape == ToolShape::round && name == "Punch")
         {
           require_positive(diameter, e + "Diameter", "mm");

@@ -10,6 +10,7 @@
 #include <formsolve/postprocess/progress.h>
 #include <formsolve/refinement/adapt.h>
 #include <formsolve/simulation/time_loop.h>
+#include <formsolve/simulation/tool_placement.h>
 
 #include <algorithm>
 #include <chrono>
@@ -216,15 +217,17 @@ namespace formsolve
     void TimeLoop<dim>::make_part()
     {
       if (prm.geometry.start_from.empty())
+        state.create_mesh();
+      else
         {
-          state.create_mesh();
-          return;
+          earlier = std::make_unique<EarlierRun>(
+            find_earlier_run(prm.geometry.start_from,
+                             prm.output.directory,
+                             parameter_listing()));
+          load_earlier_part(*earlier, state);
         }
-      earlier =
-        std::make_unique<EarlierRun>(find_earlier_run(prm.geometry.start_from,
-                                                      prm.output.directory,
-                                                      parameter_listing()));
-      load_earlier_part(*earlier, state);
+      for (const auto &line : place_tools_against_part(state))
+        pcout << line << std::endl;
     }
 
     template <int dim>

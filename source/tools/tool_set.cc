@@ -6,6 +6,7 @@
 #include <formsolve/tools/tool_set.h>
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 namespace formsolve
@@ -228,6 +229,10 @@ namespace formsolve
                                                            t.profile_radius,
                                                            v));
       friction.push_back(t.friction_coefficient);
+      sides.push_back(sb);
+      to_part.push_back(t.gap_from == parameters::GapFrom::part
+                          ? t.gap
+                          : std::numeric_limits<double>::quiet_NaN());
       penalty.push_back(t.penalty_factor > 0 ? t.penalty_factor
                                              : c.penalty_factor);
       allowed.push_back(t.allowed_penetration > 0 ? t.allowed_penetration

@@ -236,6 +236,8 @@ expect tool_no_force "Tools/Counter punch/Force: must be positive" "$counter" \
 expect tool_direction_symmetry "Tools/Pad/Direction: must lie in the model's symmetry planes" "$base3d" \
   --set "Tools/Additional tools=Pad" --set "Tools/Pad/Motion=prescribed" \
   --set "Tools/Pad/Direction=1, 0, -1"
+expect gap_from_part_negative "Tools/Die/Gap: must not be negative with 'Gap measured from' = part" "$base" \
+  --set "Tools/Die/Gap measured from=part" --set "Tools/Die/Gap=-1"
 # Checkpoint and restart.
 expect resume_other_case "written by another case" "$base" --resume
 expect resume_names_entry "Geometry/Thickness = '3' in the checkpoint, '10' now" "$base" --resume

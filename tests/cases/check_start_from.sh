@@ -52,6 +52,33 @@ if [ "$ranks" -gt 1 ]; then # the same second operation on one rank
   echo "ok: the second operation's history.csv is the same on $ranks ranks and 1"
 fi
 
+# Tools placed against the part (Gap measured from = part): on the flat
+# blank the same run as by the blank's planes; in the second operation the
+# punch and holder land where the first run left them, within the allowed
+# penetration (1e-3 mm) by which they pressed into it.
+part=(--set "Tools/Punch/Gap measured from=part" --set "Tools/Die/Gap measured from=part"
+      --set "Tools/Blank holder/Gap measured from=part")
+run "$out/one-placed.log" --set "Output/Output directory=$out/one-placed" "${quiet[@]}" "${part[@]}" ||
+  { cat "$out/one-placed.log"; fail "the one run with tools placed against the blank"; }
+numdiff -q -s ', \t\n' -r 1e-8 -a 1e-10 "$out/one/history.csv" "$out/one-placed/history.csv" ||
+  fail "tools placed against a flat blank changed the run"
+run "$out/second-placed.log" --set "Output/Output directory=$out/second-placed" "${quiet[@]}" \
+  --set "Geometry/Start from=$out/first" --set "Tools/Punch/Stroke=2.5" --set "Tools/Punch/Gap=0" \
+  --set "Tools/Blank holder/Gap=0" "${part[@]}" || { cat "$out/second-placed.log"; fail "the second run with placed tools"; }
+"$py" - "$out/second-placed.log" "$holder" <<'PY' || exit 1
+import re, sys
+text = open(sys.argv[1]).read()
+moved = {m[0]: (float(m[1]) if m[2] == "up" else -float(m[1])) for m in
+         re.findall(r"Tools/(\w[\w ]*): moved ([-0-9.e]+) mm (down|up)", text)}
+# Where the first run left each tool, and its side: a tool above lands up to
+# the penetration higher, one below up to it lower.
+want = {"Punch": (-2.5, 1), "Die": (0.0, -1), "Blank holder": (float(sys.argv[2]), 1)}
+for tool, (z, side) in want.items():
+    if tool not in moved or not (-1e-6 <= side * (moved[tool] - z) <= 1.001e-3):
+        sys.exit(f"FAIL: {tool} placed at {moved.get(tool)} mm along z, not within the "
+                 f"allowed penetration above {z} mm")
+    print(f"ok: {tool} placed {moved[tool]:+.6f} mm along z (first run left it at {z:+.6f})")
+PY
 # A sprung start: the first run released, the second starts from the
 # sprung shape (its first output's points are the sprung part's).
 spring=(--set "Springback/Enabled=true" --set "Material/Young's modulus=200000")

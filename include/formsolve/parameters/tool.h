@@ -19,6 +19,13 @@ namespace formsolve
       mesh               // a triangulated surface from a file (3-D models)
     };
 
+    /// Where a tool's Gap is measured from.
+    enum class GapFrom
+    {
+      blank, // the planes z = 0 (tools below) and z = thickness (above)
+      part   // the part's surface facing the tool, along z
+    };
+
     /// A tool's name as history columns and fields carry it: lower case,
     /// '_' for spaces (Blank holder: blank_holder).
     std::string tool_key(const std::string &name);
@@ -35,6 +42,7 @@ namespace formsolve
       double      corner_radius        = 8;  // mm (rounded rectangle, in plane)
       double      profile_radius       = 8;  // mm (fillet of the working edge)
       double      gap                  = 0; // mm, initial distance to the sheet
+      GapFrom     gap_from             = GapFrom::blank;
       double      friction_coefficient = 0.1;
       double      penalty_factor       = 0; // N/mm^3; 0: Contact/Penalty factor
       double      allowed_penetration  = 0; // mm; 0: Contact/Allowed penetr.

@@ -101,6 +101,11 @@ namespace formsolve
       {
         return orientation_notes;
       }
+      /// +1: tool @p i is above the sheet (comes down to it), -1: below.
+      int side(const unsigned int i) const { return sides[i]; }
+      /// The distance tool @p i keeps from the part at the start (mm) when
+      /// its Gap is measured from the part; NaN when from the blank.
+      double gap_to_part(const unsigned int i) const { return to_part[i]; }
       /// Put tool @p i back where a checkpoint found it.
       void   restore(const unsigned int    i,
                      const Tensor<1, dim> &displacement,
@@ -123,6 +128,8 @@ namespace formsolve
 
       std::vector<std::unique_ptr<RigidTool<dim>>> tools;
       std::vector<double>                          friction, penalty, allowed;
+      std::vector<int>                             sides;
+      std::vector<double>                          to_part;
       std::vector<std::string>                     keys, orientation_notes;
       std::vector<Motion<dim>>                     motions;
       std::vector<unsigned int>                    levels;
