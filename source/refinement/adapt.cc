@@ -36,7 +36,8 @@ namespace formsolve
     template <int dim>
     AdaptReport adapt_flagged(state::State<dim>               &state,
                               const state::HistoryUpdate<dim> &update,
-                              const std::function<void()>     &before_change)
+                              const std::function<void()>     &before_change,
+                              const bool                       measure)
     {
       AdaptReport report;
       auto       &tria = state.tria;
@@ -53,10 +54,13 @@ namespace formsolve
       if (before_change)
         before_change();
 
-      report.volume_before = volume(state);
-      report.strain_before = integral(state, &History::strain);
-      report.damage_before = integral(state, &History::oyane);
-      report.cells_before  = tria.n_global_active_cells();
+      if (measure)
+        {
+          report.volume_before = volume(state);
+          report.strain_before = integral(state, &History::strain);
+          report.damage_before = integral(state, &History::oyane);
+        }
+      report.cells_before = tria.n_global_active_cells();
 
       // Velocity, displacement and the contact state, as nodal fields:
       // nodes that persist keep their values, new nodes interpolate them.
@@ -93,12 +97,15 @@ namespace formsolve
                                      state.history);
       state.update_contact_areas();
 
-      report.changed      = true;
-      report.cells_after  = tria.n_global_active_cells();
-      report.dofs         = state.dof_handler.n_dofs();
-      report.volume_after = volume(state);
-      report.strain_after = integral(state, &History::strain);
-      report.damage_after = integral(state, &History::oyane);
+      report.changed     = true;
+      report.cells_after = tria.n_global_active_cells();
+      report.dofs        = state.dof_handler.n_dofs();
+      if (measure)
+        {
+          report.volume_after = volume(state);
+          report.strain_after = integral(state, &History::strain);
+          report.damage_after = integral(state, &History::oyane);
+        }
       return report;
     }
 
@@ -109,7 +116,8 @@ namespace formsolve
                                   const std::function<void()> &);       \
   template AdaptReport adapt_flagged(state::State<dim> &,               \
                                      const state::HistoryUpdate<dim> &, \
-                                     const std::function<void()> &);
+                                     const std::function<void()> &,     \
+                                     const bool);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace refinement

@@ -1,5 +1,8 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/distributed/cell_data_transfer.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/adaptation_strategies.h>
 
 #include <formsolve/model/cell_kinematics.h>
 #include <formsolve/model/dimensions.h>
@@ -9,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace formsolve
 {
@@ -56,40 +60,98 @@ namespace formsolve
         return low <= 0 && high > 0 ? far : 0;
       }
 
-      /// Flags the cells the line crosses whose nodes lie further than the
-      /// tolerance from it (@p line), and the cut-away cells coarser than a
-      /// kept cell they share a vertex with. Returns the number flagged
-      /// here and the largest crossing distance.
+      /// Flags the cells the line crosses whose nodes lie further than
+      /// @p tolerance from it (with @p set; else only measures). Returns the
+      /// number flagged and the largest crossing distance (all ranks).
       template <int dim>
-      std::pair<unsigned int, double> flag(state::State<dim>    &state,
-                                           const TrimShape<dim> &shape,
-                                           const double          tolerance,
-                                           const bool            line)
+      std::pair<unsigned int, double> flag_line(state::State<dim>    &state,
+                                                const TrimShape<dim> &shape,
+                                                const double          tolerance,
+                                                const bool            set)
       {
-        const KeptCells kept    = kept_cells(state, shape);
-        const auto      touches = GridTools::vertex_to_cell_map(state.tria);
-        unsigned int    n       = 0;
-        double          far     = 0;
+        unsigned int n   = 0;
+        double       far = 0;
         for (const auto &cell : state.tria.active_cell_iterators())
           if (cell->is_locally_owned())
             {
               const double d = crossing(shape, vertices(state, cell));
               far            = std::max(far, d);
-              bool refine    = line && d > tolerance;
-              if (!kept[cell->active_cell_index()])
-                for (const unsigned int v : cell->vertex_indices())
-                  for (const auto &other : touches[cell->vertex_index(v)])
-                    if (!other->is_artificial() &&
-                        kept[other->active_cell_index()] &&
-                        other->level() > cell->level())
-                      refine = true;
-              if (refine)
+              if (set && d > tolerance)
                 {
                   cell->set_refine_flag();
                   ++n;
                 }
             }
-        return {n, far};
+        return {Utilities::MPI::sum(n, state.comm),
+                Utilities::MPI::max(far, state.comm)};
+      }
+
+      /// Flags the cut-away cells coarser than a kept cell they share a
+      /// vertex with (@p kept on owned and ghost cells), so that no kept
+      /// node hangs on cut-away cells only. Returns the number flagged (all
+      /// ranks).
+      template <int dim>
+      unsigned int flag_neighbours(state::State<dim> &state,
+                                   const KeptCells   &kept)
+      {
+        const auto   touches = GridTools::vertex_to_cell_map(state.tria);
+        unsigned int n       = 0;
+        for (const auto &cell : state.tria.active_cell_iterators())
+          if (cell->is_locally_owned() && !kept[cell->active_cell_index()] &&
+              !cell->refine_flag_set())
+            for (const unsigned int v : cell->vertex_indices())
+              for (const auto &other : touches[cell->vertex_index(v)])
+                if (!other->is_artificial() &&
+                    kept[other->active_cell_index()] &&
+                    other->level() > cell->level() && !cell->refine_flag_set())
+                  {
+                    cell->set_refine_flag();
+                    ++n;
+                  }
+        return Utilities::MPI::sum(n, state.comm);
+      }
+
+      /// Refines the flagged cells; their children take their parent's side
+      /// of @p kept, which then holds the new mesh's cells (owned and
+      /// ghost).
+      template <int dim>
+      bool refine_keeping_sides(state::State<dim>               &state,
+                                const state::HistoryUpdate<dim> &update,
+                                KeptCells                       &kept)
+      {
+        auto         &tria = state.tria;
+        Vector<float> sides(tria.n_active_cells());
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned())
+            sides[cell->active_cell_index()] = kept[cell->active_cell_index()];
+        parallel::distributed::CellDataTransfer<dim, dim, Vector<float>>
+                   transfer(tria,
+                   false,
+                   &AdaptationStrategies::Refinement::preserve<dim, dim, float>,
+                   &AdaptationStrategies::Coarsening::max<dim, dim, float>);
+        const auto a = refinement::adapt_flagged(
+          state,
+          update,
+          [&]() { transfer.prepare_for_coarsening_and_refinement(sides); },
+          /*measure=*/false);
+        if (!a.changed)
+          return false;
+        Vector<float> after(tria.n_active_cells());
+        transfer.unpack(after);
+        kept.assign(tria.n_active_cells(), false);
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned())
+            kept[cell->active_cell_index()] =
+              after[cell->active_cell_index()] > 0.5f;
+        GridTools::exchange_cell_data_to_ghosts<char, Triangulation<dim>>(
+          tria,
+          [&](const auto &cell) -> std::optional<char> {
+            return char(kept[cell->active_cell_index()]);
+          },
+          [&](const auto &cell, const char side) {
+            kept[cell->active_cell_index()] = side != 0;
+          });
+        return true;
       }
 
       template <int dim>
@@ -141,23 +203,28 @@ namespace formsolve
       report.volume_before =
         kept_integrals(state, KeptCells(state.tria.n_active_cells(), true))
           .first;
-      // Each pass halves the cells the line crosses; the passes that only
-      // match a kept cell's cut-away neighbours to its level are extra
-      // (bounded by the finest level).
-      while (true)
+      // Each pass halves the cells the line crosses (their cut-away
+      // neighbours come along); the part is the cells whose centres lie on
+      // its side.
+      for (; report.passes < trimming.max_passes; ++report.passes)
         {
-          const bool line       = report.passes < trimming.max_passes;
-          const auto [n, far]   = flag(state, shape, trimming.tolerance, line);
-          report.edge_deviation = Utilities::MPI::max(far, state.comm);
-          if (Utilities::MPI::sum(n, state.comm) == 0)
+          const auto n = flag_line(state, shape, trimming.tolerance, true);
+          if (n.first == 0)
             break;
-          const auto a = refinement::adapt_flagged(state, update);
-          if (!a.changed)
+          flag_neighbours(state, kept_cells(state, shape));
+          if (!refinement::adapt_flagged(state, update, {}, false).changed)
             break;
-          if (line && report.edge_deviation > trimming.tolerance)
-            ++report.passes;
         }
-      kept                = kept_cells(state, shape);
+      report.edge_deviation =
+        flag_line(state, shape, trimming.tolerance, false).second;
+      // Then the part stays as it is: cut-away cells refined to match a
+      // finer kept neighbour keep their side in their children (by their
+      // centres, those across the line would join the part, and refine the
+      // line further with each pass).
+      kept = kept_cells(state, shape);
+      while (flag_neighbours(state, kept) > 0 &&
+             refine_keeping_sides(state, update, kept))
+        {}
       report.cells_after  = state.tria.n_global_active_cells();
       unsigned int n_kept = 0;
       for (const auto &cell : state.tria.active_cell_iterators())

@@ -37,9 +37,12 @@ namespace formsolve
 
     /// The same for the refinement and coarsening flags already set on
     /// @p state's triangulation (locally owned cells), whoever set them.
+    /// Without @p measure the report's volume and integrals stay 0 (each
+    /// is a pass over the mesh).
     template <int dim>
     AdaptReport adapt_flagged(state::State<dim>               &state,
                               const state::HistoryUpdate<dim> &update,
-                              const std::function<void()> &before_change = {});
+                              const std::function<void()> &before_change = {},
+                              const bool                   measure = true);
   } // namespace refinement
 } // namespace formsolve
