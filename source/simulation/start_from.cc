@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 namespace formsolve
 {
@@ -23,14 +24,15 @@ namespace formsolve
         return it == meta.end() ? "" : it->second;
       }
 
-      /// The earlier run's end_reason from its run-summary.txt.
-      std::string end_reason(const std::string &folder)
+      /// The earlier run's run-summary.txt as key -> value.
+      std::map<std::string, std::string> summary(const std::string &folder)
       {
-        std::ifstream in(folder + "/run-summary.txt");
+        std::map<std::string, std::string> s;
+        std::ifstream                      in(folder + "/run-summary.txt");
         for (std::string line; std::getline(in, line);)
-          if (line.rfind("end_reason = ", 0) == 0)
-            return line.substr(13);
-        return "";
+          if (const auto eq = line.find(" = "); eq != std::string::npos)
+            s[line.substr(0, eq)] = line.substr(eq + 3);
+        return s;
       }
     } // namespace
 
@@ -56,6 +58,11 @@ namespace formsolve
                              "' holds no finished formsolve run (no complete "
                              "checkpoint in it)"));
       const Metadata meta = read_metadata(r.checkpoint);
+      AssertThrow(meta.count("finished"),
+                  ExcMessage(entry + ": the run in '" + folder +
+                             "' was made by a formsolve without next "
+                             "operations, which did not mark its end; run "
+                             "it again"));
       AssertThrow(value(meta, "finished") == "1",
                   ExcMessage(
                     entry + ": the run in '" + folder +
@@ -84,7 +91,12 @@ namespace formsolve
       r.steps      = std::stoul(value(meta, "step"));
       r.travel     = std::stod(value(meta, "punch_travel"));
       r.sprung     = value(meta, "sprung") == "1";
-      r.end_reason = end_reason(folder);
+      const auto s = summary(folder);
+      r.end_reason = value(s, "end_reason");
+      if (value(s, "split") == "yes")
+        r.split = "at punch travel " + value(s, "split_travel") + " mm, at " +
+                  value(s, "split_location") + " (" +
+                  value(s, "split_measure") + ")";
       return r;
     }
 

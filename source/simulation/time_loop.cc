@@ -192,6 +192,9 @@ namespace formsolve
               << earlier->steps << " steps to punch travel " << earlier->travel
               << " mm: " << earlier->end_reason
               << "); tools and time start afresh" << std::endl;
+      if (earlier && !earlier->split.empty())
+        pcout << "warning: that part split in its run (" << earlier->split
+              << "); this run forms a split part" << std::endl;
       if (resume)
         pcout << "resumed from the checkpoint at step " << state.step
               << ", punch travel " << state.tools.punch_travel() << " mm"

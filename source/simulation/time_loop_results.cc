@@ -310,6 +310,10 @@ namespace formsolve
                       "against the blank");
       for (const auto &s : springback_warnings())
         w.push_back(s);
+      if (earlier && !earlier->split.empty())
+        w.push_back("Geometry/Start from: the part of " + earlier->folder +
+                    " had split in that run (" + earlier->split +
+                    "); this run formed a split part further");
       return w;
     }
 

@@ -93,6 +93,21 @@ run "$out/sprung-second.log" --set "Output/Output directory=$out/sprung-second" 
 grep -q "(sprung back, after" "$out/sprung-second.log" || fail "the sprung start was not said"
 "$py" "$cases/check_start_from.py" --sprung "$out/sprung-first" "$out/sprung-second" || exit 1
 
+# A part that split in its run: said at the start and in the summary's
+# warnings (the split written into a copy's run-summary.txt).
+cp -r "$out/first" "$out/split"
+sed -i 's/^split = no/split = yes/; s/^split_travel = .*/split_travel = 2.25/;
+        s/^split_location = .*/split_location = r 20.1 z -1.2/; s/^split_measure = .*/split_measure = neck/' \
+  "$out/split/run-summary.txt"
+run "$out/from-split.log" --set "Output/Output directory=$out/from-split" "${quiet[@]}" "${next[@]}" \
+  --set "Geometry/Start from=$out/split" --set "Tools/Punch/Stroke=0.25" ||
+  { cat "$out/from-split.log"; fail "the run from a split part"; }
+grep -q "warning: that part split in its run (at punch travel 2.25 mm, at r 20.1 z -1.2 (neck))" "$out/from-split.log" ||
+  fail "the split of the earlier part was not said"
+grep -q "^warning_.* had split in that run" "$out/from-split/run-summary.txt" ||
+  fail "the split of the earlier part is not in run-summary.txt"
+echo "ok: a split part is said"
+
 # Bad Start from: one message naming the entry, before any work, nothing
 # written into the earlier folder.
 bad() { # bad NAME PATTERN [ARGS...]
@@ -111,6 +126,9 @@ bad no_run "Geometry/Start from: '$out/empty' holds no finished formsolve run" -
 cp -r "$out/first" "$out/unfinished"
 sed -i 's/^finished = 1/finished = 0/' "$out/unfinished/checkpoint/meta.txt"
 bad unfinished "has not finished" --set "Geometry/Start from=$out/unfinished"
+cp -r "$out/first" "$out/older"
+sed -i '/^finished = /d' "$out/older/checkpoint/meta.txt"
+bad older "was made by a formsolve without next operations" --set "Geometry/Start from=$out/older"
 bad material "Material/Strength coefficient = '829' in the earlier run, '800' now" \
   --set "Geometry/Start from=$out/first" --set "Material/Strength coefficient=800"
 bad frame "Material/Rolling direction = " \

@@ -20,6 +20,8 @@ namespace formsolve
       double       travel = 0;     // its punch travel at the end (mm)
       bool         sprung = false; // the shape after its springback
       std::string  end_reason;
+      /// Where and when its part split (run-summary.txt), "" if it did not.
+      std::string split;
     };
 
     /// Checks that Geometry/Start from names a finished, untrimmed run of
