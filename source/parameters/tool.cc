@@ -95,6 +95,11 @@ namespace formsolve
             number("mm", 0),
             "Adaptive penalty: allowed penetration delta into this tool (mm); "
             "0 takes Contact/Allowed penetration.");
+      declare_mesh(d);
+    }
+
+    void Tool::declare_mesh(Declarations &d)
+    {
       d.add(
         "Mesh file",
         mesh_file,

@@ -2,6 +2,7 @@
 #include <formsolve/simulation/parameter_listing.h>
 #include <formsolve/simulation/start_from.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -45,11 +46,17 @@ namespace formsolve
       std::error_code ec;
       AssertThrow(fs::is_directory(folder, ec),
                   ExcMessage(entry + ": '" + folder + "' is not a folder"));
-      AssertThrow(fs::weakly_canonical(folder, ec) !=
-                    fs::weakly_canonical(output_directory, ec),
+      // Not the folder read, nor a folder inside it.
+      const auto read    = fs::weakly_canonical(folder, ec);
+      const auto written = fs::weakly_canonical(output_directory, ec);
+      const auto [end, _] =
+        std::mismatch(read.begin(), read.end(), written.begin(), written.end());
+      AssertThrow(end != read.end(),
                   ExcMessage(
                     "Output/Output directory: '" + output_directory +
-                    "' is the folder " + entry +
+                    (written == read ? "' is the folder "
+                                     : "' lies in the folder ") +
+                    entry +
                     " reads; a next operation never writes into it (choose "
                     "another Output directory)"));
       r.checkpoint = newest_checkpoint(folder);
@@ -98,6 +105,15 @@ namespace formsolve
                   value(s, "split_location") + " (" +
                   value(s, "split_measure") + ")";
       return r;
+    }
+
+    std::string summary_lines(const EarlierRun *earlier)
+    {
+      return "\nstart_from = " + (earlier ? earlier->folder : "") +
+             "\nstart_from_shape = " +
+             (!earlier          ? ""
+              : earlier->sprung ? "sprung"
+                                : "as formed");
     }
 
     template <int dim>

@@ -162,11 +162,7 @@ namespace formsolve
       std::ostringstream f;
       f << "model = " << model::name(prm.geometry.model)
         << "\nsection_width = " << prm.geometry.section_depth()
-        << "\nstart_from = " << (earlier ? earlier->folder : "")
-        << "\nstart_from_shape = "
-        << (!earlier          ? ""
-            : earlier->sprung ? "sprung"
-                              : "as formed")
+        << summary_lines(earlier.get())
         << "\nranks = " << Utilities::MPI::n_mpi_processes(comm)
         << "\ndofs = " << summary.n_dofs
         << "\nmean_dofs = " << summary.dof_steps / std::max(1u, summary.steps)

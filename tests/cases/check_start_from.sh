@@ -137,6 +137,8 @@ bad mesh "Mesh/Layers through thickness = '4' in the earlier run, '2' now" \
   --set "Geometry/Start from=$out/first" --set "Mesh/Layers through thickness=2"
 bad same_folder "Output/Output directory: '$out/first' is the folder Geometry/Start from reads" \
   --set "Geometry/Start from=$out/first" --set "Output/Output directory=$out/first"
+bad inside_folder "Output/Output directory: '$out/first/next' lies in the folder Geometry/Start from reads" \
+  --set "Geometry/Start from=$out/first" --set "Output/Output directory=$out/first/next"
 run "$out/trimmed.log" --set "Output/Output directory=$out/trimmed" "${quiet[@]}" \
   --set "Tools/Punch/Stroke=0.5" --set "Trimming/Planes=r < 28" || { cat "$out/trimmed.log"; fail "the trimmed run"; }
 bad trimmed "trimmed its part (Trimming); a next operation on a trimmed part is not available yet" \

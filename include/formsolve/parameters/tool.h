@@ -63,6 +63,10 @@ namespace formsolve
       /// to these members (their values now are the defaults).
       void declare(Declarations &d);
       void validate() const;
+
+    private:
+      /// The entries of a Shape = mesh tool.
+      void declare_mesh(Declarations &d);
     };
 
   } // namespace parameters

@@ -32,6 +32,10 @@ namespace formsolve
                                 const std::string &output_directory,
                                 const std::string &listing);
 
+    /// The lines of run-summary.txt that name the earlier run (start_from,
+    /// start_from_shape; empty values without one).
+    std::string summary_lines(const EarlierRun *earlier);
+
     /// The earlier run's part into @p state (empty triangulation): mesh,
     /// history (strain, damage, stresses), and its shape at rest.
     template <int dim>
