@@ -1,10 +1,11 @@
 """A next operation against the same draw in one run (check_start_from.sh).
 
-check_start_from.py ONE SECOND TRAVEL: the second run (started from the
-first's end, TRAVEL mm in) takes the steps the one run takes from TRAVEL on:
-its punch force, strain, thickness, damage and holder position at each step
-are the one run's at the same total travel, and its sheet.csv at the end is
-the one run's.
+check_start_from.py ONE SECOND TRAVEL [STEPS TOLERANCE]: the second run
+(started from the first's end, TRAVEL mm in) takes the steps the one run
+takes from TRAVEL on (STEPS of them, 10 by default): its punch force,
+strain, thickness, damage and holder position at each step are the one
+run's at the same total travel within TOLERANCE (1e-4 by default), and its
+sheet.csv at the end is the one run's.
 
 check_start_from.py --sprung FIRST SECOND: the second run's first output
 (step 0) is the first run's sprung part, point by point.
@@ -31,7 +32,7 @@ def relative(a, b, scale):
     return abs(a - b) / max(abs(scale), 1e-30)
 
 
-def continuity(one_dir, second_dir, travel):
+def continuity(one_dir, second_dir, travel, steps=10, tolerance=TOLERANCE):
     one = numbers(results.read(one_dir))
     second = numbers(results.read(second_dir))
     by_travel = {round(r["punch_travel"], 9): r for r in one}
@@ -57,13 +58,13 @@ def continuity(one_dir, second_dir, travel):
         }
         for k, (a, b, s) in pairs.items():
             worst[k] = max(worst.get(k, 0), relative(a, b, s))
-    if len(second) != 10:
-        sys.exit(f"FAIL: the second run took {len(second)} steps, not 10")
+    if len(second) != steps:
+        sys.exit(f"FAIL: the second run took {len(second)} steps, not {steps}")
     for k, w in worst.items():
         print(f"{k}: largest relative difference {w:.2e}")
-        if w > TOLERANCE:
+        if w > tolerance:
             sys.exit(f"FAIL: {k} differs from the one run by {w:.2e} "
-                     f"(bound {TOLERANCE})")
+                     f"(bound {tolerance})")
     a = list(csv.DictReader(open(os.path.join(one_dir, "sheet.csv"))))
     b = list(csv.DictReader(open(os.path.join(second_dir, "sheet.csv"))))
     if len(a) != len(b):
@@ -74,7 +75,7 @@ def continuity(one_dir, second_dir, travel):
         d = max(relative(float(x[key]), float(y[key]), float(x[key]))
                 for x, y in zip(a, b))
         print(f"sheet.csv {key}: largest relative difference {d:.2e}")
-        if d > TOLERANCE:
+        if d > tolerance:
             sys.exit(f"FAIL: sheet.csv {key} differs by {d:.2e}")
     print("ok: the second operation continues the one run")
 
@@ -130,4 +131,5 @@ if __name__ == "__main__":
     if sys.argv[1] == "--sprung":
         sprung(sys.argv[2], sys.argv[3])
     else:
-        continuity(sys.argv[1], sys.argv[2], float(sys.argv[3]))
+        continuity(sys.argv[1], sys.argv[2], float(sys.argv[3]),
+                   *([int(sys.argv[4]), float(sys.argv[5])] if len(sys.argv) > 5 else []))
