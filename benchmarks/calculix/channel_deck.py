@@ -17,11 +17,13 @@ What CalculiX 2.20 does with it (6 December 2026):
   nodes; at a zero initial gap the contact opens and the strip floats (no
   convergence), hence the tools overlap it by EPS = 1e-8 mm; K = 1e6 N/mm^3
   diverges at the first increment, K = 1e4 runs.
-- 64 x 2 elements draw 5 mm (punch force 2 x 1435 N; the holder at gap 0
-  carries 2 x 6431 N); formsolve's 256 x 4 Q1 section under the same
-  settings (von Mises, holder at gap 0) gives 1558 N and a holder force of
-  3674 N. 256 x 2 elements stop converging at 4.46 mm. The springback step
-  diverges. Not a comparison yet.
+- 256 x 2 elements stop converging at 4.46 mm (increments cut to 2e-4 of
+  the stroke); at 4 mm the punch force is 2 x 482 N and the holder's 2 x
+  770 N, where formsolve's 256 x 4 Q1 section under the same settings
+  (`build/formsolve prm/channel.prm --set "Tools/Blank holder/Control=gap"
+  --set "Material/Yield criterion=von Mises"`) gives 1414 N and 4417 N.
+  64 x 2 elements reach 5 mm (2 x 1435 N against formsolve's 1558 N). The
+  springback step diverges. Not a comparison yet.
 
 Usage: channel_deck.py NX NY STROKE OUT.inp [--springback]; ccx -i OUT
 """
