@@ -78,10 +78,11 @@ namespace formsolve
         "its own tools and stroke. The part keeps its mesh, shape (sprung if "
         "the earlier run released it: Springback/Enabled), thickness, "
         "equivalent strain, damage and stresses; Geometry, Mesh and Material "
-        "must be those of the earlier run. The tools are placed as for a new "
-        "blank (Gap from the planes z = 0 and z = Thickness), so tools that "
-        "work on the formed part move by Gap or Mesh offset. Nothing is "
-        "written into that folder. Empty: a new blank.");
+        "must be those of the earlier run (Young's modulus, Poisson's ratio "
+        "and Density aside). The tools are placed as for a new "
+        "blank (Gap from the planes z = 0 and z = Thickness), or against "
+        "the part with Tools/<tool>/Gap measured from = part. Nothing is "
+        "written into that folder or below it. Empty: a new blank.");
     }
 
 

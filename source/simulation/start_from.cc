@@ -88,7 +88,13 @@ namespace formsolve
                                            listing,
                                            "the earlier run",
                                            {"Geometry/", "Mesh/", "Material/"},
-                                           {entry});
+                                           // The forming does not use
+                                           // them: a springback may come
+                                           // only with this run.
+                                           {entry,
+                                            "Material/Young's modulus",
+                                            "Material/Poisson's ratio",
+                                            "Material/Density"});
       AssertThrow(diff.empty(),
                   ExcMessage(entry + ": the part of '" + folder +
                              "' was formed with other Geometry, Mesh or "
