@@ -1,5 +1,8 @@
+#include <deal.II/base/exceptions.h>
+
 #include <formsolve/material/flow_stress.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace formsolve
@@ -7,7 +10,9 @@ namespace formsolve
   namespace material
   {
     FlowStress::FlowStress(const parameters::Material &p)
-        : voce(p.flow_curve == parameters::FlowCurve::voce)
+        : curve(p.flow_curve)
+        , extrapolation(p.flow_extrapolation)
+        , table(p.flow_curve_points)
         , K(p.strength_coefficient)
         , n(p.hardening_exponent)
         , eps0(p.prestrain)
@@ -18,17 +23,55 @@ namespace formsolve
         , rate0(p.reference_strain_rate)
     {}
 
+    std::pair<double, double> FlowStress::tabulated(const double strain) const
+    {
+      using parameters::FlowExtrapolation;
+      Assert(table.size() >= 2, dealii::ExcInternalError());
+      if (strain < table.front().first)
+        return {table.front().second, 0.};
+      const auto &[e1, s1] = table.back();
+      if (strain >= e1)
+        {
+          const auto &[e0, s0] = table[table.size() - 2];
+          const double slope   = (s1 - s0) / (e1 - e0);
+          if (extrapolation == FlowExtrapolation::constant)
+            return {s1, 0.};
+          if (extrapolation == FlowExtrapolation::last_slope ||
+              e0 <= 0) // no log-log slope from a point at zero strain
+            return {s1 + slope * (strain - e1), slope};
+          const double power = std::log(s1 / s0) / std::log(e1 / e0);
+          const double h     = s1 * std::pow(strain / e1, power);
+          return {h, power * h / strain};
+        }
+      // The segment holding strain (the first point with a larger strain).
+      const auto k = std::upper_bound(table.begin(),
+                                      table.end(),
+                                      strain,
+                                      [](const double e, const auto &p) {
+                                        return e < p.first;
+                                      }) -
+                     table.begin();
+      const auto &[e0, s0] = table[k - 1];
+      const auto &[e2, s2] = table[k];
+      const double slope   = (s2 - s0) / (e2 - e0);
+      return {s0 + slope * (strain - e0), slope};
+    }
+
     double FlowStress::hardening(const double strain) const
     {
-      if (voce)
+      if (curve == parameters::FlowCurve::voce)
         return A - B * std::exp(-C * strain);
+      if (curve == parameters::FlowCurve::table)
+        return tabulated(strain).first;
       return K * (n == 0. ? 1. : std::pow(eps0 + strain, n));
     }
 
     double FlowStress::hardening_slope(const double strain) const
     {
-      if (voce)
+      if (curve == parameters::FlowCurve::voce)
         return B * C * std::exp(-C * strain);
+      if (curve == parameters::FlowCurve::table)
+        return tabulated(strain).second;
       return n == 0. ? 0. : n * hardening(strain) / (eps0 + strain);
     }
 

@@ -18,6 +18,21 @@ namespace formsolve
       if (p.flow_curve == parameters::FlowCurve::voce)
         flow << "flow curve: Voce, sigma = " << p.voce_saturation << " - "
              << p.voce_amplitude << " exp(-" << p.voce_rate << " eps) MPa";
+      else if (p.flow_curve == parameters::FlowCurve::table)
+        {
+          const auto &t = p.flow_curve_points;
+          flow << "flow curve: table of " << t.size() << " points ("
+               << p.flow_curve_file << "), " << t.front().second << " MPa at "
+               << t.front().first << " to " << t.back().second << " MPa at "
+               << t.back().first << ", linear in between, beyond: "
+               << (p.flow_extrapolation ==
+                       parameters::FlowExtrapolation::power_law
+                     ? "power law"
+                   : p.flow_extrapolation ==
+                       parameters::FlowExtrapolation::last_slope
+                     ? "last slope"
+                     : "constant");
+        }
       else
         {
           flow << "flow curve: Swift, sigma = " << p.strength_coefficient

@@ -1,4 +1,5 @@
 #include <formsolve/parameters/declared.h>
+#include <formsolve/parameters/flow_curve_file.h>
 #include <formsolve/parameters/material.h>
 #include <formsolve/parameters/require.h>
 
@@ -23,8 +24,13 @@ namespace formsolve
       const Choice<FractureMeasure> measure_names{
         {"through-thickness average", FractureMeasure::through_thickness},
         {"local", FractureMeasure::local}};
-      const Choice<FlowCurve>  flow_curve_names{{"swift", FlowCurve::swift},
-                                               {"voce", FlowCurve::voce}};
+      const Choice<FlowCurve> flow_curve_names{{"swift", FlowCurve::swift},
+                                               {"voce", FlowCurve::voce},
+                                               {"table", FlowCurve::table}};
+      const Choice<FlowExtrapolation> extrapolation_names{
+        {"power law", FlowExtrapolation::power_law},
+        {"last slope", FlowExtrapolation::last_slope},
+        {"constant", FlowExtrapolation::constant}};
       const Choice<MeanStress> mean_stress_names{
         {"cell pressure", MeanStress::cell_pressure},
         {"projected", MeanStress::projected}};
@@ -182,8 +188,24 @@ namespace formsolve
             "The strain hardening: swift, sigma = K (eps0 + eps)^n (Strength "
             "coefficient, Prestrain, Hardening exponent); voce, sigma = A - B "
             "exp(-C eps) (the Voce entries; Hardening exponent is then used "
-            "only as the n-value of the Keeler-Brazier forming limit). Either "
-            "times (rate/rate0)^m.");
+            "only as the n-value of the Keeler-Brazier forming limit); table, "
+            "the points of Flow curve file, linear in between (Hardening "
+            "exponent likewise only for the forming limit). Each times "
+            "(rate/rate0)^m.");
+      d.add("Flow curve file",
+            flow_curve_file,
+            input_file(),
+            "Flow curve = table: a CSV of equivalent plastic strain (-) and "
+            "flow stress (MPa), one point per line, strains from 0 up, "
+            "stresses not falling (a header line and '#' lines are skipped); "
+            "below its first strain the first stress.");
+      d.add("Flow curve extrapolation",
+            flow_extrapolation,
+            extrapolation_names,
+            "Flow curve = table, beyond its last point: power law, sigma_N "
+            "(eps/eps_N)^n with n the last segment's slope in log-log (a Swift "
+            "curve continued); last slope, the last segment's straight line; "
+            "constant, sigma_N.");
       d.add("Voce saturation stress",
             voce_saturation,
             number("MPa"),
@@ -281,8 +303,23 @@ namespace formsolve
     }
 
 
+    void Material::read_flow_curve()
+    {
+      if (flow_curve == FlowCurve::table)
+        {
+          require(!flow_curve_file.empty(),
+                  "Material/Flow curve file",
+                  "must name a CSV of strain, stress (MPa) when Flow curve = "
+                  "table");
+          flow_curve_points = parameters::read_flow_curve(flow_curve_file);
+        }
+    }
+
     void Material::validate() const
     {
+      require(flow_curve != FlowCurve::table || flow_curve_points.size() >= 2,
+              "Material/Flow curve file",
+              "was not read (Flow curve = table)");
       require_positive(strength_coefficient,
                        "Material/Strength coefficient",
                        "MPa");

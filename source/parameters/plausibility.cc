@@ -7,10 +7,53 @@ namespace formsolve
 {
   namespace parameters
   {
+    namespace
+    {
+      /// max over eps of h(eps) exp(-eps) for a tabulated h: at the points,
+      /// where it is stationary inside a segment (eps = e0 + 1 - h0/slope),
+      /// and along the extrapolation beyond the last point.
+      double table_tensile_strength(const Material &m)
+      {
+        const auto &p    = m.flow_curve_points;
+        double      best = 0;
+        auto        at   = [&](const double e, const double h) {
+          best = std::max(best, h * std::exp(-e));
+        };
+        for (std::size_t k = 0; k < p.size(); ++k)
+          {
+            at(p[k].first, p[k].second);
+            if (k + 1 < p.size())
+              {
+                const double slope = (p[k + 1].second - p[k].second) /
+                                     (p[k + 1].first - p[k].first);
+                const double e = p[k].first + 1 - p[k].second / slope;
+                if (slope > 0 && e > p[k].first && e < p[k + 1].first)
+                  at(e, p[k].second + slope * (e - p[k].first));
+              }
+          }
+        const auto [e0, s0] = p[p.size() - 2];
+        const auto [e1, s1] = p.back();
+        const double slope  = (s1 - s0) / (e1 - e0);
+        if (m.flow_extrapolation == FlowExtrapolation::power_law && e0 > 0)
+          {
+            // sigma_N (e/e_N)^n exp(-e) is largest at e = n.
+            const double n = std::log(s1 / s0) / std::log(e1 / e0);
+            if (n > e1)
+              at(n, s1 * std::pow(n / e1, n));
+          }
+        else if (m.flow_extrapolation != FlowExtrapolation::constant &&
+                 slope > 0 && e1 + 1 - s1 / slope > e1)
+          at(e1 + 1 - s1 / slope, slope * (1 - s1 / slope) + s1);
+        return best;
+      }
+    } // namespace
+
     double tensile_strength(const Material &m)
     {
       if (m.tensile_strength > 0)
         return m.tensile_strength;
+      if (m.flow_curve == FlowCurve::table)
+        return table_tensile_strength(m);
       // Considere: d sigma/d eps = sigma at the uniform strain eps_u; the
       // engineering stress there is sigma(eps_u) exp(-eps_u).
       double eps_u = 0, sigma_u = 0;
@@ -79,10 +122,14 @@ namespace formsolve
             g.blank_diameter,
             " mm is smaller than 1 mm; lengths are in mm, not m");
       const double stress = run.material.stress_scale();
+      const auto   curve  = run.material.flow_curve;
+      const char  *scale  = curve == FlowCurve::voce
+                              ? "Material/Voce saturation stress = "
+                            : curve == FlowCurve::table
+                              ? "Material/Flow curve file: its largest stress, "
+                              : "Material/Strength coefficient = ";
       if (stress < 50)
-        say(run.material.flow_curve == FlowCurve::voce
-              ? "Material/Voce saturation stress = "
-              : "Material/Strength coefficient = ",
+        say(scale,
             stress,
             " MPa is below 50 MPa, softer than any sheet metal at room "
             "temperature; stresses are in MPa, not GPa");
@@ -90,19 +137,15 @@ namespace formsolve
         say("Tools/Punch/Speed = ",
             run.tools.punch_speed,
             " mm/s is below 0.01 mm/s; speeds are in mm/s, not m/s");
-      if (run.material.flow_curve == FlowCurve::voce &&
-          run.material.forming_limit_table.empty())
+      if (curve != FlowCurve::swift && run.material.forming_limit_table.empty())
         say("Material/Forming limit table is empty: the forming limit is "
             "Keeler-Brazier's from Material/Hardening exponent = ",
             run.material.hardening_exponent,
-            ", which the Voce curve does not set; give the sheet's FLC or "
-            "its n-value");
+            ", which the ",
+            curve == FlowCurve::voce ? "Voce curve" : "table",
+            " does not set; give the sheet's FLC or its n-value");
       if (stress > 1e4)
-        say(run.material.flow_curve == FlowCurve::voce
-              ? "Material/Voce saturation stress = "
-              : "Material/Strength coefficient = ",
-            stress,
-            " MPa is above 10 GPa; stresses are in MPa, not Pa");
+        say(scale, stress, " MPa is above 10 GPa; stresses are in MPa, not Pa");
       for (const Tool *t :
            {&run.tools.punch, &run.tools.die, &run.tools.blank_holder})
         if (t->enabled && t->friction_coefficient > 0.5)

@@ -35,6 +35,7 @@ namespace formsolve
 
     void Run::complete()
     {
+      material.read_flow_curve(); // Siebel's estimate may need it
       if (tools.holder_force_by_siebel)
         {
           const auto  s    = siebel(*this);

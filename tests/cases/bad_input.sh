@@ -236,6 +236,14 @@ expect tool_no_force "Tools/Counter punch/Force: must be positive" "$counter" \
 expect tool_direction_symmetry "Tools/Pad/Direction: must lie in the model's symmetry planes" "$base3d" \
   --set "Tools/Additional tools=Pad" --set "Tools/Pad/Motion=prescribed" \
   --set "Tools/Pad/Direction=1, 0, -1"
+# A tabulated flow curve.
+expect flow_curve_no_file "Material/Flow curve file: must name a CSV" "$base" \
+  --set "Material/Flow curve=table"
+expect flow_curve_missing_file "Material/Flow curve file: cannot read" "$base" \
+  --set "Material/Flow curve=table" --set "Material/Flow curve file=$work/no-such-curve.csv"
+printf 'strain,stress\n0,300\n0.2,420\n0.4,410\n' > "$work/softening.csv"
+expect flow_curve_softening "softening.csv, line 4: the stress falls" "$base" \
+  --set "Material/Flow curve=table" --set "Material/Flow curve file=$work/softening.csv"
 expect gap_from_part_negative "Tools/Die/Gap: must not be negative with 'Gap measured from' = part" "$base" \
   --set "Tools/Die/Gap measured from=part" --set "Tools/Die/Gap=-1"
 # Checkpoint and restart.

@@ -3,12 +3,17 @@
 
 #include <formsolve/parameters/parameters.h>
 
+#include <utility>
+#include <vector>
+
 namespace formsolve
 {
   namespace material
   {
-    /// sigma_bar = h(eps) (rate / rate0)^m with Swift's h = K (eps0 + eps)^n
-    /// or Voce's h = A - B exp(-C eps)   (doc/theory.md, eq. 2)
+    /// sigma_bar = h(eps) (rate / rate0)^m with Swift's h = K (eps0 + eps)^n,
+    /// Voce's h = A - B exp(-C eps) or a table's h, linear between its
+    /// points and continued by Flow curve extrapolation   (doc/theory.md,
+    /// eq. 2)
     class FlowStress
     {
     public:
@@ -23,8 +28,13 @@ namespace formsolve
       double hardening(const double strain) const;
       double hardening_slope(const double strain) const;
 
-      bool   voce;
-      double K, n, eps0, A, B, C, m, rate0;
+      /// The table's h and dh/deps at @p strain.
+      std::pair<double, double> tabulated(const double strain) const;
+
+      parameters::FlowCurve                  curve;
+      parameters::FlowExtrapolation          extrapolation;
+      std::vector<std::pair<double, double>> table; // (eps, h)
+      double                                 K, n, eps0, A, B, C, m, rate0;
     };
   } // namespace material
 } // namespace formsolve

@@ -33,7 +33,16 @@ namespace formsolve
     enum class FlowCurve
     {
       swift, // K (eps0 + eps)^n
-      voce   // A - B exp(-C eps)
+      voce,  // A - B exp(-C eps)
+      table  // points of Flow curve file, linear in between
+    };
+
+    /// A tabulated flow curve beyond its last point.
+    enum class FlowExtrapolation
+    {
+      power_law,  // sigma_N (eps/eps_N)^n_N, n_N of the last segment
+      last_slope, // the last segment's straight line
+      constant    // sigma_N
     };
 
     /// The mean stress in the fracture integrals (doc/theory.md, 11b).
@@ -52,17 +61,21 @@ namespace formsolve
 
     struct Material
     {
-      FlowCurve flow_curve            = FlowCurve::swift;
-      double    strength_coefficient  = 829;   // K (MPa)
-      double    hardening_exponent    = 0.2;   // n
-      double    prestrain             = 0.002; // eps_0
-      double    voce_saturation       = 0;     // A (MPa)
-      double    voce_amplitude        = 0;     // B (MPa)
-      double    voce_rate             = 0;     // C (-)
-      double    tensile_strength      = 0;     // R_m (MPa); 0: flow curve
-      double    rate_sensitivity      = 0;     // m
-      double    reference_strain_rate = 1;     // 1/s
-      double    limiting_strain_rate  = 1e-4;  // 1/s, rigid-zone cutoff
+      FlowCurve         flow_curve           = FlowCurve::swift;
+      double            strength_coefficient = 829;   // K (MPa)
+      double            hardening_exponent   = 0.2;   // n
+      double            prestrain            = 0.002; // eps_0
+      double            voce_saturation      = 0;     // A (MPa)
+      double            voce_amplitude       = 0;     // B (MPa)
+      double            voce_rate            = 0;     // C (-)
+      std::string       flow_curve_file; // Flow curve = table: CSV path
+      FlowExtrapolation flow_extrapolation = FlowExtrapolation::power_law;
+      /// Its (strain, stress MPa) points, read by read_flow_curve().
+      std::vector<std::pair<double, double>> flow_curve_points;
+      double    tensile_strength      = 0;    // R_m (MPa); 0: flow curve
+      double    rate_sensitivity      = 0;    // m
+      double    reference_strain_rate = 1;    // 1/s
+      double    limiting_strain_rate  = 1e-4; // 1/s, rigid-zone cutoff
       RigidZone rigid_zone            = RigidZone::smooth;
       double    volumetric_penalty    = 1e4; // alpha (-)
       // Elasticity, for springback only (the forming is rigid-plastic):
@@ -98,12 +111,19 @@ namespace formsolve
       /// Whether Young's modulus is given (springback needs it).
       bool elastic_given() const { return std::isfinite(young_modulus); }
 
-      /// The flow curve's stress scale (MPa): K, or A for Voce.
+      /// The flow curve's stress scale (MPa): K, A for Voce, the largest
+      /// tabulated stress.
       double stress_scale() const
       {
         return flow_curve == FlowCurve::voce ? voce_saturation
-                                             : strength_coefficient;
+               : flow_curve == FlowCurve::table && !flow_curve_points.empty()
+                 ? flow_curve_points.back().second
+                 : strength_coefficient;
       }
+
+      /// Flow curve = table: reads Flow curve file into flow_curve_points
+      /// (after the input is read, before validate()).
+      void read_flow_curve();
 
       /// Declares the entries, bound to these members.
       void declare(Declarations &d);
