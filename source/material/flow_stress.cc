@@ -19,6 +19,7 @@ namespace formsolve
         , A(p.voce_saturation)
         , B(p.voce_amplitude)
         , C(p.voce_rate)
+        , alpha(p.swift_weight)
         , m(p.rate_sensitivity)
         , rate0(p.reference_strain_rate)
     {}
@@ -59,20 +60,27 @@ namespace formsolve
 
     double FlowStress::hardening(const double strain) const
     {
-      if (curve == parameters::FlowCurve::voce)
-        return A - B * std::exp(-C * strain);
-      if (curve == parameters::FlowCurve::table)
-        return tabulated(strain).first;
-      return K * (n == 0. ? 1. : std::pow(eps0 + strain, n));
+      using parameters::FlowCurve;
+      const double voce  = A - B * std::exp(-C * strain),
+                   swift = K * (n == 0. ? 1. : std::pow(eps0 + strain, n));
+      return curve == FlowCurve::voce    ? voce
+             : curve == FlowCurve::table ? tabulated(strain).first
+             : curve == FlowCurve::swift_voce
+               ? alpha * swift + (1 - alpha) * voce
+               : swift;
     }
 
     double FlowStress::hardening_slope(const double strain) const
     {
-      if (curve == parameters::FlowCurve::voce)
-        return B * C * std::exp(-C * strain);
-      if (curve == parameters::FlowCurve::table)
-        return tabulated(strain).second;
-      return n == 0. ? 0. : n * hardening(strain) / (eps0 + strain);
+      using parameters::FlowCurve;
+      const double voce = B * C * std::exp(-C * strain),
+                   swift =
+                     n == 0. ? 0. : n * K * std::pow(eps0 + strain, n - 1);
+      return curve == FlowCurve::voce    ? voce
+             : curve == FlowCurve::table ? tabulated(strain).second
+             : curve == FlowCurve::swift_voce
+               ? alpha * swift + (1 - alpha) * voce
+               : swift;
     }
 
     double FlowStress::value(const double strain, const double rate) const

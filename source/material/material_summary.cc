@@ -18,6 +18,12 @@ namespace formsolve
       if (p.flow_curve == parameters::FlowCurve::voce)
         flow << "flow curve: Voce, sigma = " << p.voce_saturation << " - "
              << p.voce_amplitude << " exp(-" << p.voce_rate << " eps) MPa";
+      else if (p.flow_curve == parameters::FlowCurve::swift_voce)
+        flow << "flow curve: Swift-Voce, sigma = " << p.swift_weight << " "
+             << p.strength_coefficient << " (" << p.prestrain << " + eps)^"
+             << p.hardening_exponent << " + " << 1 - p.swift_weight << " ("
+             << p.voce_saturation << " - " << p.voce_amplitude << " exp(-"
+             << p.voce_rate << " eps)) MPa";
       else if (p.flow_curve == parameters::FlowCurve::table)
         {
           const auto &t = p.flow_curve_points;

@@ -26,6 +26,8 @@ namespace formsolve
         {"local", FractureMeasure::local}};
       const Choice<FlowCurve> flow_curve_names{{"swift", FlowCurve::swift},
                                                {"voce", FlowCurve::voce},
+                                               {"swift-voce",
+                                                FlowCurve::swift_voce},
                                                {"table", FlowCurve::table}};
       const Choice<FlowExtrapolation> extrapolation_names{
         {"power law", FlowExtrapolation::power_law},
@@ -188,7 +190,9 @@ namespace formsolve
             "The strain hardening: swift, sigma = K (eps0 + eps)^n (Strength "
             "coefficient, Prestrain, Hardening exponent); voce, sigma = A - B "
             "exp(-C eps) (the Voce entries; Hardening exponent is then used "
-            "only as the n-value of the Keeler-Brazier forming limit); table, "
+            "only as the n-value of the Keeler-Brazier forming limit); "
+            "swift-voce, alpha Swift + (1 - alpha) Voce with alpha = Swift "
+            "weight (both curves' entries); table, "
             "the points of Flow curve file, linear in between (Hardening "
             "exponent likewise only for the forming limit). Each times "
             "(rate/rate0)^m.");
@@ -227,6 +231,11 @@ namespace formsolve
             voce_rate,
             number("-"),
             "C in the Voce curve (-), >= 0.");
+      d.add("Swift weight",
+            swift_weight,
+            number("-", 0, 1),
+            "alpha of Flow curve = swift-voce (-): the Swift curve's share, "
+            "the Voce curve taking 1 - alpha.");
     }
 
     void Material::declare(Declarations &d)
@@ -323,7 +332,7 @@ namespace formsolve
       require_positive(strength_coefficient,
                        "Material/Strength coefficient",
                        "MPa");
-      if (flow_curve == FlowCurve::voce)
+      if (has_voce())
         {
           require_positive(voce_saturation,
                            "Material/Voce saturation stress",

@@ -54,6 +54,24 @@ namespace formsolve
         return m.tensile_strength;
       if (m.flow_curve == FlowCurve::table)
         return table_tensile_strength(m);
+      if (m.flow_curve == FlowCurve::swift_voce)
+        {
+          // No closed form: h e^-eps on a fine grid (the maximum lies below
+          // eps = n < 1 for any Swift part of a sheet; 3 covers it).
+          double best = 0;
+          for (unsigned int k = 0; k <= 30000; ++k)
+            {
+              const double e = 3e-4 * k;
+              const double h =
+                m.swift_weight * m.strength_coefficient *
+                  std::pow(m.prestrain + e, m.hardening_exponent) +
+                (1 - m.swift_weight) *
+                  (m.voce_saturation -
+                   m.voce_amplitude * std::exp(-m.voce_rate * e));
+              best = std::max(best, h * std::exp(-e));
+            }
+          return best;
+        }
       // Considere: d sigma/d eps = sigma at the uniform strain eps_u; the
       // engineering stress there is sigma(eps_u) exp(-eps_u).
       double eps_u = 0, sigma_u = 0;
@@ -127,6 +145,9 @@ namespace formsolve
                               ? "Material/Voce saturation stress = "
                             : curve == FlowCurve::table
                               ? "Material/Flow curve file: its largest stress, "
+                            : curve == FlowCurve::swift_voce
+                              ? "Material/Strength coefficient and Voce "
+                                "saturation stress, blended by Swift weight, "
                               : "Material/Strength coefficient = ";
       if (stress < 50)
         say(scale,
@@ -137,7 +158,8 @@ namespace formsolve
         say("Tools/Punch/Speed = ",
             run.tools.punch_speed,
             " mm/s is below 0.01 mm/s; speeds are in mm/s, not m/s");
-      if (curve != FlowCurve::swift && run.material.forming_limit_table.empty())
+      if ((curve == FlowCurve::voce || curve == FlowCurve::table) &&
+          run.material.forming_limit_table.empty())
         say("Material/Forming limit table is empty: the forming limit is "
             "Keeler-Brazier's from Material/Hardening exponent = ",
             run.material.hardening_exponent,

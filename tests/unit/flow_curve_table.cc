@@ -120,6 +120,28 @@ int main()
               1,
               2e-4);
 
+  // The Swift-Voce blend's strength (found on a grid) at its ends is the
+  // closed forms' of Swift and Voce.
+  {
+    parameters::Material voce = swift, blend = swift;
+    voce.flow_curve      = parameters::FlowCurve::voce;
+    voce.voce_saturation = 330.2;
+    voce.voce_amplitude  = 190.0;
+    voce.voce_rate       = 12.4;
+    blend                = voce;
+    blend.flow_curve     = parameters::FlowCurve::swift_voce;
+    for (const double alpha : {0., 1.})
+      {
+        blend.swift_weight = alpha;
+        test::close("Swift-Voce tensile strength at alpha = " +
+                      std::to_string(alpha),
+                    parameters::tensile_strength(blend) /
+                      parameters::tensile_strength(alpha == 0 ? voce : swift),
+                    1,
+                    1e-6);
+      }
+  }
+
   // The reader refuses, naming the entry.
   test::close("one point refused", refused("0, 300\n"), 1, 0);
   test::close("falling strain refused",

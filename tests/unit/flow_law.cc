@@ -149,5 +149,44 @@ int main()
   const material::RigidViscoplastic voce_law(p);
   for (const double r : {3e-5, 1e-2, 1.})
     check_tangent(voce_law, "Voce", r, strain, dt);
+
+  // The Swift-Voce blend alpha Swift + (1 - alpha) Voce: its closed form,
+  // its slope, the ends alpha = 1 (Swift) and 0 (Voce), the tangent.
+  p.flow_curve   = parameters::FlowCurve::swift_voce;
+  p.swift_weight = 0.3;
+  p.validate();
+  const double K = p.strength_coefficient, n = p.hardening_exponent,
+               e0 = p.prestrain;
+  const material::FlowStress blend(p);
+  for (const double e : {0., 0.1, 0.5})
+    {
+      const double swift  = K * std::pow(e0 + e, n),
+                   voce_h = 330.2 - 190.0 * std::exp(-12.4 * e);
+      test::close("Swift-Voce: sigma(" + std::to_string(e) + ")",
+                  blend.value(e, 2.),
+                  (0.3 * swift + 0.7 * voce_h) * factor,
+                  1e-9);
+      test::close("Swift-Voce: slope at " + std::to_string(e),
+                  blend.d_strain(e, 2.),
+                  (0.3 * n * swift / (e0 + e) +
+                   0.7 * 190.0 * 12.4 * std::exp(-12.4 * e)) *
+                    factor,
+                  1e-9);
+    }
+  for (const double alpha : {0., 1.})
+    {
+      auto q         = p;
+      q.swift_weight = alpha;
+      auto r         = p;
+      r.flow_curve   = alpha == 0. ? parameters::FlowCurve::voce
+                                   : parameters::FlowCurve::swift;
+      test::close("Swift-Voce at alpha = " + std::to_string(alpha),
+                  material::FlowStress(q).value(0.3, 2.),
+                  material::FlowStress(r).value(0.3, 2.),
+                  1e-9);
+    }
+  const material::RigidViscoplastic blend_law(p);
+  for (const double r : {3e-5, 1e-2, 1.})
+    check_tangent(blend_law, "Swift-Voce", r, strain, dt);
   return test::result();
 }

@@ -11,7 +11,8 @@ namespace formsolve
   namespace material
   {
     /// sigma_bar = h(eps) (rate / rate0)^m with Swift's h = K (eps0 + eps)^n,
-    /// Voce's h = A - B exp(-C eps) or a table's h, linear between its
+    /// Voce's h = A - B exp(-C eps), their blend alpha Swift + (1 - alpha)
+    /// Voce, or a table's h, linear between its
     /// points and continued by Flow curve extrapolation   (doc/theory.md,
     /// eq. 2)
     class FlowStress
@@ -34,7 +35,7 @@ namespace formsolve
       parameters::FlowCurve                  curve;
       parameters::FlowExtrapolation          extrapolation;
       std::vector<std::pair<double, double>> table; // (eps, h)
-      double                                 K, n, eps0, A, B, C, m, rate0;
+      double K, n, eps0, A, B, C, alpha, m, rate0;
     };
   } // namespace material
 } // namespace formsolve

@@ -32,9 +32,10 @@ namespace formsolve
     /// The strain hardening of the flow stress (doc/theory.md, eq. 2).
     enum class FlowCurve
     {
-      swift, // K (eps0 + eps)^n
-      voce,  // A - B exp(-C eps)
-      table  // points of Flow curve file, linear in between
+      swift,      // K (eps0 + eps)^n
+      voce,       // A - B exp(-C eps)
+      swift_voce, // alpha Swift + (1 - alpha) Voce
+      table       // points of Flow curve file, linear in between
     };
 
     /// A tabulated flow curve beyond its last point.
@@ -68,6 +69,7 @@ namespace formsolve
       double            voce_saturation      = 0;     // A (MPa)
       double            voce_amplitude       = 0;     // B (MPa)
       double            voce_rate            = 0;     // C (-)
+      double            swift_weight         = 0.5;   // alpha of swift-voce (-)
       std::string       flow_curve_file; // Flow curve = table: CSV path
       FlowExtrapolation flow_extrapolation = FlowExtrapolation::power_law;
       /// Its (strain, stress MPa) points, read by read_flow_curve().
@@ -111,14 +113,24 @@ namespace formsolve
       /// Whether Young's modulus is given (springback needs it).
       bool elastic_given() const { return std::isfinite(young_modulus); }
 
-      /// The flow curve's stress scale (MPa): K, A for Voce, the largest
-      /// tabulated stress.
+      /// The flow curve's stress scale (MPa): K, A for Voce, their blend,
+      /// the largest tabulated stress.
       double stress_scale() const
       {
         return flow_curve == FlowCurve::voce ? voce_saturation
+               : flow_curve == FlowCurve::swift_voce
+                 ? swift_weight * strength_coefficient +
+                     (1 - swift_weight) * voce_saturation
                : flow_curve == FlowCurve::table && !flow_curve_points.empty()
                  ? flow_curve_points.back().second
                  : strength_coefficient;
+      }
+
+      /// Whether the flow curve has Voce's part.
+      bool has_voce() const
+      {
+        return flow_curve == FlowCurve::voce ||
+               flow_curve == FlowCurve::swift_voce;
       }
 
       /// Flow curve = table: reads Flow curve file into flow_curve_points
