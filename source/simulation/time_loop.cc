@@ -10,7 +10,6 @@
 #include <formsolve/postprocess/progress.h>
 #include <formsolve/refinement/adapt.h>
 #include <formsolve/simulation/time_loop.h>
-#include <formsolve/simulation/tool_placement.h>
 
 #include <algorithm>
 #include <chrono>
@@ -217,23 +216,6 @@ namespace formsolve
     }
 
     template <int dim>
-    void TimeLoop<dim>::make_part()
-    {
-      if (prm.geometry.start_from.empty())
-        state.create_mesh();
-      else
-        {
-          earlier = std::make_unique<EarlierRun>(
-            find_earlier_run(prm.geometry.start_from,
-                             prm.output.directory,
-                             parameter_listing()));
-          load_earlier_part(*earlier, state);
-        }
-      for (const auto &line : place_tools_against_part(state))
-        pcout << line << std::endl;
-    }
-
-    template <int dim>
     void TimeLoop<dim>::start_refinement(const bool resume)
     {
       refinement_log = std::make_unique<postprocess::StatisticsTable>(
@@ -260,21 +242,6 @@ namespace formsolve
         {}
       pcout << "adapted mesh: " << state.tria.n_global_active_cells()
             << " cells, " << state.dof_handler.n_dofs() << " DoFs" << std::endl;
-    }
-
-    template <int dim>
-    void TimeLoop<dim>::save_checkpoint(RunSummary &summary, const bool end)
-    {
-      TimerOutput::Scope t(timer, "checkpoint");
-      step_solver.release_factors();
-      summary.wall_time    = seconds();
-      auto meta            = loop_metadata(summary);
-      meta["punch_travel"] = exact_text(state.tools.punch_travel());
-      // A next operation starts only from a finished, untrimmed part.
-      meta["finished"] = end && !summary.solver_failed ? "1" : "0";
-      meta["trimmed"]  = kept ? "1" : "0";
-      checkpoint->save(state, meta, end ? sprung_shape.get() : nullptr);
-      last_checkpoint = seconds();
     }
 
     template <int dim>

@@ -1,9 +1,12 @@
-// What the time loop keeps in a checkpoint besides the State: its running
-// statistics, the step control's time step, the output records.
+// What the time loop keeps in a checkpoint besides the State (its running
+// statistics, the step control's time step, the output records), the
+// checkpoint itself, and the part a run starts with: a new blank or an
+// earlier run's (Geometry/Start from).
 #include <deal.II/base/mpi.h>
 
 #include <formsolve/model/dimensions.h>
 #include <formsolve/simulation/time_loop.h>
+#include <formsolve/simulation/tool_placement.h>
 
 #include <sstream>
 
@@ -150,11 +153,45 @@ namespace formsolve
           tool_loaded.push_back(c == '1');
     }
 
+    template <int dim>
+    void TimeLoop<dim>::make_part()
+    {
+      if (prm.geometry.start_from.empty())
+        state.create_mesh();
+      else
+        {
+          earlier = std::make_unique<EarlierRun>(
+            find_earlier_run(prm.geometry.start_from,
+                             prm.output.directory,
+                             parameter_listing()));
+          load_earlier_part(*earlier, state);
+        }
+      for (const auto &line : place_tools_against_part(state))
+        pcout << line << std::endl;
+    }
+
+    template <int dim>
+    void TimeLoop<dim>::save_checkpoint(RunSummary &summary, const bool end)
+    {
+      TimerOutput::Scope t(timer, "checkpoint");
+      step_solver.release_factors();
+      summary.wall_time    = seconds();
+      auto meta            = loop_metadata(summary);
+      meta["punch_travel"] = exact_text(state.tools.punch_travel());
+      // A next operation starts only from a finished, untrimmed part.
+      meta["finished"] = end && !summary.solver_failed ? "1" : "0";
+      meta["trimmed"]  = kept ? "1" : "0";
+      checkpoint->save(state, meta, end ? sprung_shape.get() : nullptr);
+      last_checkpoint = seconds();
+    }
+
     // The class is instantiated in time_loop.cc; these members are here.
 #define INSTANTIATE(dim)                                                       \
   template std::string TimeLoop<dim>::parameter_listing() const;               \
   template Metadata    TimeLoop<dim>::loop_metadata(const RunSummary &) const; \
-  template void TimeLoop<dim>::restore_loop(const Metadata &, RunSummary &);
+  template void TimeLoop<dim>::restore_loop(const Metadata &, RunSummary &);   \
+  template void TimeLoop<dim>::make_part();                                    \
+  template void TimeLoop<dim>::save_checkpoint(RunSummary &, const bool);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace simulation
