@@ -77,6 +77,11 @@ namespace formsolve
                     value(meta, "step") +
                     ", during the run, or the run ended in a solver failure); "
                     "let it finish (--resume) first"));
+      for (const auto *key : {"step", "punch_travel", "fields", "coarse_cells"})
+        AssertThrow(!value(meta, key).empty(),
+                    ExcMessage(entry + ": " + r.checkpoint +
+                               "/meta.txt is incomplete (no '" + key +
+                               "'); run the earlier case again"));
       AssertThrow(value(meta, "trimmed") != "1",
                   ExcMessage(
                     entry + ": the run in '" + folder +
