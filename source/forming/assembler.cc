@@ -199,11 +199,13 @@ namespace formsolve
             const auto h = history.get_data(cell);
             for (unsigned int q = 0; q < kf.n_points(); ++q)
               {
-                const auto   m  = material.evaluate(points.rate(q),
-                                                 h[q]->strain,
-                                                 dt,
-                                                 newton,
-                                                 points.map(q));
+                const auto m = material.evaluate(
+                  points.rate(q),
+                  h[q]->strain,
+                  dt,
+                  newton,
+                  points.map(q),
+                  dual ? dual->start(cell->active_cell_index(), q) : nullptr);
                 const double dV = kf.dV(q);
                 kf.shape_strains(q, B);
                 add_point(material,

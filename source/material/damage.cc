@@ -1,5 +1,6 @@
 #include <formsolve/material/damage.h>
 #include <formsolve/material/hill48.h>
+#include <formsolve/material/yld2004.h>
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +21,9 @@ namespace formsolve
             p.damage_normalisation ==
               parameters::DamageNormalisation::rolling_direction)
           return 1;
-        const double r = Hill48::from_parameters(p).mean_r();
+        const double r = p.non_quadratic()
+                           ? Yld2004::from_parameters(p).mean_r()
+                           : Hill48::from_parameters(p).mean_r();
         return std::sqrt(2 * (2 + r) / (3 * (1 + r)));
       }
     } // namespace

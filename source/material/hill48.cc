@@ -1,3 +1,4 @@
+#include <formsolve/material/directional.h>
 #include <formsolve/material/hill48.h>
 
 #include <cmath>
@@ -145,25 +146,11 @@ namespace formsolve
       return Q;
     }
 
-    namespace
-    {
-      /// The uniaxial stress of unit size along @p angle in the RD-TD plane.
-      SymmetricTensor<2, 3> uniaxial(const double angle)
-      {
-        const double          c = std::cos(angle), s = std::sin(angle);
-        SymmetricTensor<2, 3> sigma;
-        sigma[0][0] = c * c;
-        sigma[1][1] = s * s;
-        sigma[0][1] = c * s;
-        return sigma;
-      }
-    } // namespace
-
     double Hill48::r_value(const double angle) const
     {
       // The flow rule D ~ P : sigma; width (in-plane, normal to the load)
       // over thickness strain rate.
-      const SymmetricTensor<2, 3> D = primal() * uniaxial(angle);
+      const SymmetricTensor<2, 3> D = primal() * uniaxial_stress(angle);
       const Tensor<1, 3> width({-std::sin(angle), std::cos(angle), 0.});
       return width * (D * width) / D[2][2];
     }
@@ -172,8 +159,8 @@ namespace formsolve
     {
       // sigma_bar(s u) = s sqrt(u : P : u) for a uniaxial unit stress u.
       const SymmetricTensor<4, 3> P = primal();
-      return std::sqrt(uniaxial(0) * (P * uniaxial(0)) /
-                       (uniaxial(angle) * (P * uniaxial(angle))));
+      return std::sqrt(uniaxial_stress(0) * (P * uniaxial_stress(0)) /
+                       (uniaxial_stress(angle) * (P * uniaxial_stress(angle))));
     }
 
   } // namespace material

@@ -59,7 +59,7 @@ namespace formsolve
 
       if (!law.isotropic())
         {
-          std::string hill = law.hill().summary();
+          std::string hill = law.criterion_summary();
           for (std::size_t k = hill.find('\n'); k != std::string::npos;
                k             = hill.find('\n', k))
             hill.replace(k, 1, ", ");

@@ -1,6 +1,7 @@
 #include <formsolve/material/rigid_viscoplastic.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace formsolve
 {
@@ -11,7 +12,11 @@ namespace formsolve
     RigidViscoplastic::RigidViscoplastic(const parameters::Material &p)
         : law(p)
         , coefficients(Hill48::from_parameters(p.anisotropy))
-        , root(coefficients.root())
+        , yld(p.anisotropy.non_quadratic()
+                ? std::optional<Yld2004>(Yld2004::from_parameters(p.anisotropy))
+                : std::nullopt)
+        , root(yld ? to_mandel(SymmetricTensor<4, 3>(identity_tensor<3>()))
+                   : coefficients.root())
         , iso(p.anisotropy.criterion == parameters::YieldCriterion::von_mises)
         , rolling(p.anisotropy.rolling_direction * M_PI / 180)
         , cutoff(p.limiting_strain_rate)
@@ -25,21 +30,30 @@ namespace formsolve
                                               const double dt,
                                               const bool   newton) const
     {
-      return respond(deviator(D), strain_old, dt, newton);
+      const SymmetricTensor<2, 3> e = deviator(D);
+      return yld ? respond_dual(e, strain_old, dt, newton, nullptr)
+                 : respond(e,
+                           std::sqrt(2. / 3. * (e * e)),
+                           strain_old,
+                           dt,
+                           newton);
     }
 
-    PointResponse RigidViscoplastic::evaluate(const SymmetricTensor<2, 3> &D,
-                                              const double     strain_old,
-                                              const double     dt,
-                                              const bool       newton,
-                                              const Mandel6x6 &map) const
+    PointResponse
+    RigidViscoplastic::evaluate(const SymmetricTensor<2, 3> &D,
+                                const double                 strain_old,
+                                const double                 dt,
+                                const bool                   newton,
+                                const Mandel6x6             &map,
+                                const SymmetricTensor<2, 3> *start) const
     {
-      // S annihilates the identity: no deviator needed.
+      // S annihilates the identity: no deviator needed (the rotation of a
+      // non-quadratic law keeps the trace, its deviator is taken).
+      const SymmetricTensor<2, 3> e =
+        from_mandel(transpose_multiply(map, to_mandel(D)));
       PointResponse out =
-        respond(from_mandel(transpose_multiply(map, to_mandel(D))),
-                strain_old,
-                dt,
-                newton);
+        yld ? respond_dual(deviator(e), strain_old, dt, newton, start)
+            : respond(e, std::sqrt(2. / 3. * (e * e)), strain_old, dt, newton);
       out.deviatoric_stress =
         from_mandel(multiply(map, to_mandel(out.deviatoric_stress)));
       return out;
@@ -50,13 +64,40 @@ namespace formsolve
       return multiply(mandel_rotation(frame), root);
     }
 
+    PointResponse
+    RigidViscoplastic::respond_dual(const SymmetricTensor<2, 3> &e,
+                                    const double                 strain_old,
+                                    const double                 dt,
+                                    const bool                   newton,
+                                    const SymmetricTensor<2, 3> *start) const
+    {
+      // s from grad g(s) = e (eq. 3e), then the von Mises law of the
+      // pseudo-rate lambda 3/2 s whose von Mises rate is sigma_bar(s): its
+      // stress 2 mu (lambda 3/2 s) is lambda times the law's, its beta
+      // lambda^2 times (both multiply e (x) e), and 2 mu P_dev becomes 2 mu
+      // lambda 3/2 (grad^2 g)^+ (doc/theory.md, eq. 3f).
+      const DualPoint d = solve_dual(*yld, e, start);
+      statistics.add(d.iterations);
+      const double  vm     = std::sqrt(1.5 * (d.stress * d.stress));
+      const double  lambda = vm > 0 ? d.rate / vm : 1;
+      PointResponse out =
+        respond(lambda * 1.5 * d.stress, d.rate, strain_old, dt, newton);
+      out.viscosity /= lambda;
+      out.deviatoric_stress /= lambda;
+      out.beta /= lambda * lambda;
+      out.beta_plastic /= lambda * lambda;
+      out.metric           = (lambda * 1.5) * d.compliance;
+      out.local_iterations = d.iterations;
+      return out;
+    }
+
     PointResponse RigidViscoplastic::respond(const SymmetricTensor<2, 3> &e,
+                                             const double                 rate,
                                              const double strain_old,
                                              const double dt,
                                              const bool   newton) const
     {
       PointResponse out;
-      const double  rate         = std::sqrt(2. / 3. * (e * e));
       out.equivalent_strain_rate = rate;
       out.strain_rate_deviator   = e;
       out.dual_rate              = rate;
@@ -120,8 +161,9 @@ namespace formsolve
                                const SymmetricTensor<2, 3> &w_rate) const
     {
       const SymmetricTensor<2, 3> &e = m.strain_rate_deviator;
-      SymmetricTensor<4, 3>        C = 2. * m.viscosity * deviator_tensor<3>() +
-                                (m.beta - m.beta_plastic) * outer_product(e, e);
+      SymmetricTensor<4, 3>        C =
+        2. * m.viscosity * (yld ? m.metric : deviator_tensor<3>()) +
+        (m.beta - m.beta_plastic) * outer_product(e, e);
       if (m.beta_plastic != 0)
         C += 0.5 * m.beta_plastic *
              (outer_product(e, w_rate) + outer_product(w_rate, e));
@@ -134,6 +176,11 @@ namespace formsolve
     {
       return multiply_transpose(multiply(map, to_mandel(tangent(m, w_rate))),
                                 map);
+    }
+
+    std::string RigidViscoplastic::criterion_summary() const
+    {
+      return yld ? yld->summary() : coefficients.summary();
     }
   } // namespace material
 } // namespace formsolve

@@ -15,7 +15,9 @@ namespace formsolve
     {
       const Choice<YieldCriterion> criterion_names{
         {"von Mises", YieldCriterion::von_mises},
-        {"Hill48", YieldCriterion::hill48}};
+        {"Hill48", YieldCriterion::hill48},
+        {"Yld2004-18p", YieldCriterion::yld2004_18p},
+        {"Hosford", YieldCriterion::hosford}};
       const Choice<HillCalibration> calibration_names{
         {"r-values", HillCalibration::r_values},
         {"yield stresses", HillCalibration::yield_stresses}};
@@ -35,8 +37,35 @@ namespace formsolve
       }
     } // namespace
 
+    bool Anisotropy::non_quadratic() const
+    {
+      return criterion == YieldCriterion::yld2004_18p ||
+             criterion == YieldCriterion::hosford;
+    }
+
+    std::vector<double>
+    Anisotropy::yld_coefficients(const unsigned int which) const
+    {
+      if (criterion == YieldCriterion::hosford)
+        return std::vector<double>(9, 1.);
+      std::vector<double> c = which == 1 ? yld_c1 : yld_c2;
+      if (c.size() == 7)
+        c.insert(c.begin() + 6, {1., 1.});
+      return c;
+    }
+
     bool Anisotropy::planar() const
     {
+      if (criterion == YieldCriterion::yld2004_18p)
+        {
+          // Which coefficient sets leave the sheet plane isotropic has no
+          // simple closed form: anything but Hosford's unit set counts.
+          for (const unsigned int w : {1u, 2u})
+            for (const double c : yld_coefficients(w))
+              if (c != 1)
+                return true;
+          return false;
+        }
       if (criterion != YieldCriterion::hill48)
         return false;
       // r0 = r45 = r90, or sigma45 = sigma90 = sigma0: isotropic in-plane.
@@ -51,6 +80,11 @@ namespace formsolve
     {
       if (criterion == YieldCriterion::von_mises)
         return "von Mises";
+      if (criterion == YieldCriterion::hosford)
+        return "Hosford, a = " + str(yield_exponent);
+      if (criterion == YieldCriterion::yld2004_18p)
+        return "Yld2004-18p, a = " + str(yield_exponent) +
+               ", C' = " + joined(yld_c1) + ", C'' = " + joined(yld_c2);
       if (calibration == HillCalibration::r_values)
         return "Hill48 from r-values " + joined(r_values);
       return "Hill48 from yield stress ratios " + joined(yield_stress_ratios) +
@@ -63,9 +97,32 @@ namespace formsolve
       d.add("Yield criterion",
             criterion,
             criterion_names,
-            "von Mises, or Hill's 1948 quadratic anisotropy normalised so that "
-            "the flow stress is the rolling direction's uniaxial one (G + H = "
-            "1: a flow curve from an RD tensile test is used as it is).");
+            "von Mises; Hill's 1948 quadratic anisotropy; Barlat's "
+            "Yld2004-18p (Yld2004-18p C1, C2, Yield exponent); or Hosford's "
+            "isotropic non-quadratic criterion (Yield exponent; a = 6 suits "
+            "BCC steels, 8 FCC aluminium). Each is normalised so that the "
+            "flow stress is the rolling direction's uniaxial one: a flow "
+            "curve from an RD tensile test is used as it is (doc/theory.md, "
+            "sections 3a, 3b).");
+      d.add("Yield exponent",
+            yield_exponent,
+            number("-", 2, 40),
+            "The exponent a of Yld2004-18p and Hosford (-): 2 with unit "
+            "coefficients is von Mises; 6 for BCC, 8 for FCC metals.");
+      d.add("Yld2004-18p C1",
+            yld_c1,
+            numbers("-", 7, 9),
+            "The coefficients of Yld2004-18p's first linear transformation "
+            "C' (-), in the order c12, c13, c21, c23, c31, c32, c66 (seven: "
+            "c44 = c55 = 1, the out-of-plane shears that in-plane tests do "
+            "not identify) or c12, c13, c21, c23, c31, c32, c44, c55, c66 "
+            "(nine); indices 1 = RD, 2 = TD, 3 = ND. All ones with the "
+            "same C2 is Hosford's criterion.");
+      d.add("Yld2004-18p C2",
+            yld_c2,
+            numbers("-", 7, 9),
+            "The coefficients of the second linear transformation C'' (-), "
+            "in the order of Yld2004-18p C1.");
       d.add(
         "Hill calibration",
         calibration,
@@ -151,6 +208,13 @@ namespace formsolve
                     ", G = " + str(G) + ", H = " + str(H) + ", N = " + str(N) +
                     "); check the ratios");
         }
+      for (const auto *c : {&yld_c1, &yld_c2})
+        require(c->size() == 7 || c->size() == 9,
+                c == &yld_c1 ? "Material/Yld2004-18p C1"
+                             : "Material/Yld2004-18p C2",
+                "needs 7 numbers (c12, c13, c21, c23, c31, c32, c66) or 9 "
+                "(c12, c13, c21, c23, c31, c32, c44, c55, c66), got " +
+                  std::to_string(c->size()));
       require(std::isfinite(rolling_direction),
               "Material/Rolling direction",
               "must be finite");

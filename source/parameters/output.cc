@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/output.h>
 #include <formsolve/parameters/require.h>
 

@@ -273,13 +273,18 @@ namespace formsolve
       check_tool_shapes(*this);
       require(geometry.model != model::Model::axisymmetric ||
                 !material.anisotropy.planar(),
-              material.anisotropy.calibration == HillCalibration::r_values
+              material.anisotropy.criterion == YieldCriterion::yld2004_18p
+                ? "Material/Yld2004-18p C1"
+              : material.anisotropy.calibration == HillCalibration::r_values
                 ? "Material/R-values"
                 : "Material/Yield stress ratios",
               "planar anisotropy (" + material.anisotropy.describe() +
                 ") varies around the cup, which an axisymmetric section "
-                "cannot represent: give one normal r-value here, or use "
-                "Geometry/Model = quarter (earing needs a 3-D model)");
+                "cannot represent: " +
+                (material.anisotropy.criterion == YieldCriterion::yld2004_18p
+                   ? std::string("use Hosford (isotropic) here, or ")
+                   : std::string("give one normal r-value here, or ")) +
+                "use Geometry/Model = quarter (earing needs a 3-D model)");
       require(!output.revolved_copy ||
                 geometry.model == model::Model::axisymmetric,
               "Output/Revolved copy",

@@ -164,6 +164,12 @@ namespace formsolve
               "Material/Young's modulus",
               "must be given for springback (Springback/Enabled = true): "
               "the release is elastic");
+      require(!run.material.anisotropy.non_quadratic(),
+              "Material/Yield criterion",
+              "is " + run.material.anisotropy.describe() +
+                ": the springback release returns to a quadratic yield "
+                "surface (von Mises or Hill48) only; switch Springback/"
+                "Enabled off or use Hill48 for the release run");
       require(!sb.slit || run.geometry.model == model::Model::half,
               "Springback/Slit",
               "the slit lies in the symmetry plane x = 0 of Geometry/Model = "

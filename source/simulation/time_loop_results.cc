@@ -150,7 +150,32 @@ namespace formsolve
       summary.peak_memory_kb = Utilities::MPI::sum(double(mem.VmHWM), comm);
       summary.peak_memory_kb_max_rank =
         Utilities::MPI::max(double(mem.VmHWM), comm);
+      const auto &local    = material.local_solves();
+      summary.local_solves = Utilities::MPI::sum(double(local.solves), comm);
+      summary.local_iterations =
+        Utilities::MPI::sum(double(local.iterations), comm);
+      summary.local_long_solves =
+        Utilities::MPI::sum(double(local.long_solves), comm);
+      summary.local_most_iterations =
+        Utilities::MPI::max(double(local.most), comm);
     }
+
+    namespace
+    {
+      /// The run summary's lines on the local solves of a non-quadratic
+      /// criterion (doc/theory.md, eq. 3e).
+      std::string local_solve_lines(const RunSummary &summary)
+      {
+        std::ostringstream s;
+        s << "\nlocal_newton_solves = " << summary.local_solves
+          << "\nlocal_newton_mean_iterations = "
+          << summary.local_iterations / std::max(1., summary.local_solves)
+          << "\nlocal_newton_most_iterations = "
+          << summary.local_most_iterations
+          << "\nlocal_newton_over_6_iterations = " << summary.local_long_solves;
+        return s.str();
+      }
+    } // namespace
 
     template <int dim>
     void TimeLoop<dim>::write_summary(const RunSummary &summary) const
@@ -197,7 +222,8 @@ namespace formsolve
               : std::string())
         << "\nmax_thinning_percent = " << sh.max_thinning
         << "\nyield_criterion = " << prm.material.anisotropy.describe() << "\n"
-        << material.hill().summary()
+        << material.criterion_summary()
+        << (material.non_quadratic() ? local_solve_lines(summary) : "")
         << "\nfracture_constants_conversion_k = " << damage.conversion()
         << "\noyane_a_used = " << damage.a_used()
         << "\noyane_b_used = " << damage.b_used() << "\nfracture_criterion = "

@@ -244,6 +244,21 @@ expect flow_curve_missing_file "Material/Flow curve file: cannot read" "$base" \
 printf 'strain,stress\n0,300\n0.2,420\n0.4,410\n' > "$work/softening.csv"
 expect flow_curve_softening "softening.csv, line 4: the stress falls" "$base" \
   --set "Material/Flow curve=table" --set "Material/Flow curve file=$work/softening.csv"
+# Non-quadratic yield.
+expect yld_coefficient_count "Material/Yld2004-18p C1=1, 1, 1\": \`1, 1, 1\` is not accepted; it takes 7 to 9 numbers" "$base" \
+  --set "Material/Yield criterion=Yld2004-18p" --set "Material/Yld2004-18p C1=1, 1, 1"
+expect yld_not_strictly_convex "Material/Yld2004-18p C1, C2 (with Yield exponent = 8) give a yield function that is not strictly convex" "$base" \
+  --set "Material/Yield criterion=Yld2004-18p" --set "Material/Yld2004-18p C1=1, 1, 1, 1, 1, 1, 0" \
+  --set "Material/Yld2004-18p C2=1, 1, 1, 1, 1, 1, 0"
+expect yld_no_yield_stress "Material/Yld2004-18p C1, C2 give no yield stress in uniaxial tension along RD" "$base" \
+  --set "Material/Yield criterion=Yld2004-18p" --set "Material/Yld2004-18p C1=0, 0, 0, 0, 0, 0, 0" \
+  --set "Material/Yld2004-18p C2=0, 0, 0, 0, 0, 0, 0"
+expect yld_exponent_range "Material/Yield exponent=1\": \`1\` is not accepted; it takes a number from 2 to 40" "$base" \
+  --set "Material/Yield criterion=Hosford" --set "Material/Yield exponent=1"
+expect yld_planar_axisymmetric "Material/Yld2004-18p C1: planar anisotropy" "$cases/cup-axisymmetric.prm" \
+  --set "Material/Yield criterion=Yld2004-18p" --set "Material/Yld2004-18p C1=1, 1, 1, 1, 1, 1, 1.2"
+expect hosford_springback "Material/Yield criterion: is Hosford, a = 8: the springback release returns to a quadratic yield surface" "$base" \
+  --set "Material/Yield criterion=Hosford" --set "Springback/Enabled=true" --set "Material/Young's modulus=2e5"
 expect gap_from_part_negative "Tools/Die/Gap: must not be negative with 'Gap measured from' = part" "$base" \
   --set "Tools/Die/Gap measured from=part" --set "Tools/Die/Gap=-1"
 # Checkpoint and restart.

@@ -43,6 +43,14 @@ namespace formsolve
                    const double       cutoff,
                    const bool         smooth);
 
+      /// The strain-rate deviator at the accepted iterate, where a
+      /// non-quadratic law's local solve starts; nullptr if none.
+      const Tensor *start(const unsigned int cell, const unsigned int q) const
+      {
+        const PointState &p = accepted[cell * points + q];
+        return p.valid ? &p.e : nullptr;
+      }
+
       /// The last trial values become the linearisation point. A swap, not
       /// a copy: every assembly writes the trials of all points it visits,
       /// and revert() needs the previous point.

@@ -53,6 +53,18 @@ namespace formsolve
       return a;
     }
 
+    /// The fourth-order tensor of a 6x6 matrix (minor symmetries only).
+    inline dealii::SymmetricTensor<4, 3> from_mandel(const Mandel6x6 &m)
+    {
+      dealii::SymmetricTensor<4, 3> C;
+      for (unsigned int r = 0; r < 6; ++r)
+        for (unsigned int s = 0; s < 6; ++s)
+          C[mandel_index[r][0]][mandel_index[r][1]][mandel_index[s][0]]
+           [mandel_index[s][1]] =
+             m[r][s] / (mandel_factor(r) * mandel_factor(s));
+      return C;
+    }
+
     inline Mandel6 multiply(const Mandel6x6 &A, const Mandel6 &x)
     {
       Mandel6 y{};

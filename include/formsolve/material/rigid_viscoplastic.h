@@ -8,8 +8,11 @@
 #include <formsolve/material/flow_stress.h>
 #include <formsolve/material/hill48.h>
 #include <formsolve/material/mandel.h>
+#include <formsolve/material/yield_dual.h>
+#include <formsolve/material/yld2004.h>
 
 #include <cmath>
+#include <optional>
 
 namespace formsolve
 {
@@ -27,6 +30,14 @@ namespace formsolve
     /// S : D (S = hill_map(), doc/theory.md eq. 3b): strain_rate_deviator,
     /// viscosity, beta and the dual rate belong to the mapped rate, the
     /// deviatoric stress is the real one, M s_mapped.
+    ///
+    /// With a non-quadratic criterion (Yld2004-18p, Hosford) the map is the
+    /// rotation to the orthotropy frame, and strain_rate_deviator is the
+    /// pseudo-rate e = lambda 3/2 s of the local solve's stress s (eq. 3e, 3f),
+    /// scaled so that sqrt(2/3 e : e) is the equivalent strain rate: the
+    /// von Mises forms of the stress (2 mu e), the tangent and the
+    /// stress-velocity linearisation then hold with 2 mu metric in place of
+    /// 2 mu P_dev.
     struct PointResponse
     {
       SymmetricTensor<2, 3> deviatoric_stress;
@@ -42,6 +53,10 @@ namespace formsolve
       // stress-velocity linearisation: the equivalent strain rate
       // (piecewise law), sqrt(rate^2 + cutoff^2) (smooth law).
       double dual_rate = 0;
+      // The non-quadratic law's lambda 3/2 (grad^2 g)^+ (P_dev for von
+      // Mises), and the local Newton iterations it took.
+      SymmetricTensor<4, 3> metric;
+      unsigned int          local_iterations = 0;
     };
 
     class RigidViscoplastic
@@ -57,20 +72,25 @@ namespace formsolve
                              const bool                   newton) const;
       /// The same with Hill's criterion, at a point whose map from the
       /// mapped rate to the current frame is @p map (hill_map()).
-      PointResponse evaluate(const SymmetricTensor<2, 3> &strain_rate,
-                             const double                 strain_old,
-                             const double                 dt,
-                             const bool                   newton,
-                             const Mandel6x6             &map) const;
+      /// @p start: for a non-quadratic law, the point's strain_rate_deviator
+      /// at an earlier iterate, where its local solve starts (or nullptr).
+      PointResponse
+      evaluate(const SymmetricTensor<2, 3> &strain_rate,
+               const double                 strain_old,
+               const double                 dt,
+               const bool                   newton,
+               const Mandel6x6             &map,
+               const SymmetricTensor<2, 3> *start = nullptr) const;
 
       /// Either: Hill's with @p map, von Mises's without (nullptr).
       PointResponse evaluate(const SymmetricTensor<2, 3> &strain_rate,
                              const double                 strain_old,
                              const double                 dt,
                              const bool                   newton,
-                             const Mandel6x6             *map) const
+                             const Mandel6x6             *map,
+                             const SymmetricTensor<2, 3> *start = nullptr) const
       {
-        return map ? evaluate(strain_rate, strain_old, dt, newton, *map)
+        return map ? evaluate(strain_rate, strain_old, dt, newton, *map, start)
                    : evaluate(strain_rate, strain_old, dt, newton);
       }
 
@@ -92,13 +112,12 @@ namespace formsolve
                         const SymmetricTensor<2, 3> &w_rate,
                         const Mandel6x6             &map) const;
 
-      /// The equivalent stress sigma_bar of a response, von Mises's or
-      /// Hill's (sqrt(3/2) times the norm of the mapped stress).
+      /// The equivalent stress sigma_bar of a response in the sheet's
+      /// criterion: the flow stress of the plastic law, scaled by rate/r_c
+      /// in a rigid zone (eq. 3a), as sigma' : D = sigma_bar eps_bar_dot.
       static double equivalent_stress(const PointResponse &m)
       {
-        const SymmetricTensor<2, 3> s =
-          2. * m.viscosity * m.strain_rate_deviator;
-        return std::sqrt(1.5 * (s * s));
+        return m.flow_stress;
       }
 
       /// Whether tangent() is 2 mu P_dev plus terms in D' and W only: the
@@ -109,6 +128,13 @@ namespace formsolve
 
       /// The Hill coefficients (von Mises's when isotropic()).
       const Hill48 &hill() const { return coefficients; }
+      /// Yld2004-18p or Hosford, or nothing (von Mises, Hill48).
+      const Yld2004 *non_quadratic() const { return yld ? &*yld : nullptr; }
+      /// "key = value" lines of the criterion's coefficients and its
+      /// r-values and stress ratios (run summary).
+      std::string criterion_summary() const;
+      /// The local solves of the non-quadratic laws on this process.
+      const DualStatistics &local_solves() const { return statistics; }
       /// The angle of RD from x (radians).
       double rolling_direction() const { return rolling; }
 
@@ -124,18 +150,27 @@ namespace formsolve
     private:
       /// The law on a strain-rate deviator (mapped, for Hill's).
       PointResponse respond(const SymmetricTensor<2, 3> &e,
+                            const double                 rate,
                             const double                 strain_old,
                             const double                 dt,
                             const bool                   newton) const;
+      /// The non-quadratic law on a deviatoric rate in the orthotropy frame.
+      PointResponse respond_dual(const SymmetricTensor<2, 3> &e,
+                                 const double                 strain_old,
+                                 const double                 dt,
+                                 const bool                   newton,
+                                 const SymmetricTensor<2, 3> *start) const;
 
-      FlowStress law;
-      Hill48     coefficients;
-      Mandel6x6  root; // S in the orthotropy frame
-      bool       iso;
-      double     rolling;
-      double     cutoff; // limiting strain rate
-      bool       smooth;
-      double     bulk;
+      FlowStress             law;
+      Hill48                 coefficients;
+      std::optional<Yld2004> yld;
+      Mandel6x6              root; // S in the orthotropy frame; I for yld
+      mutable DualStatistics statistics;
+      bool                   iso;
+      double                 rolling;
+      double                 cutoff; // limiting strain rate
+      bool                   smooth;
+      double                 bulk;
     };
   } // namespace material
 } // namespace formsolve

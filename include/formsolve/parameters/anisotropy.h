@@ -1,8 +1,9 @@
 // The sheet's plastic anisotropy, entries of the "Material" subsection: the
-// yield criterion (von Mises or Hill 1948), its calibration (r-values or
-// directional yield stresses), the transverse shear coefficients, the rolling
+// yield criterion (von Mises, Hill 1948, Barlat's Yld2004-18p or Hosford),
+// Hill's calibration (r-values or directional yield stresses), Yld2004-18p's
+// coefficients and exponent, the transverse shear coefficients, the rolling
 // direction, and the normalisation the fracture constants were calibrated in
-// (doc/theory.md, section 3a).
+// (doc/theory.md, sections 3a, 3b).
 #pragma once
 
 #include <string>
@@ -17,7 +18,9 @@ namespace formsolve
     enum class YieldCriterion
     {
       von_mises,
-      hill48
+      hill48,
+      yld2004_18p, // Barlat et al. 2005: C', C'' and the exponent
+      hosford      // isotropic, |s1 - s2|^a + ...: Yld2004-18p, C = 1
     };
 
     enum class HillCalibration
@@ -52,13 +55,25 @@ namespace formsolve
       HillCalibration     calibration = HillCalibration::r_values;
       std::vector<double> r_values    = {1.};
       std::vector<double> yield_stress_ratios; // empty: not given
+      // c12, c13, c21, c23, c31, c32, (c44, c55,) c66 of C' and C''.
+      std::vector<double> yld_c1            = {1, 1, 1, 1, 1, 1, 1};
+      std::vector<double> yld_c2            = {1, 1, 1, 1, 1, 1, 1};
+      double              yield_exponent    = 8;
       TransverseShear     transverse_shear  = TransverseShear::equal_to_n;
       double              rolling_direction = 0; // degrees from x, 3-D
       DamageNormalisation damage_normalisation =
         DamageNormalisation::normal_anisotropy;
 
       /// Whether the data vary in the sheet plane (earing; 3-D models only).
+      /// Yld2004-18p counts as planar unless all its coefficients are 1.
       bool planar() const;
+      /// Whether the criterion is one of the non-quadratic ones, whose
+      /// stress follows from a local solve (material/yield_dual.h).
+      bool non_quadratic() const;
+      /// The nine coefficients c12, c13, c21, c23, c31, c32, c44, c55, c66
+      /// of C' (@p which 1) or C'' (2): all ones for Hosford; c44 = c55 = 1
+      /// where seven are given.
+      std::vector<double> yld_coefficients(const unsigned int which) const;
       /// The calibration's name and data, for messages and the summary.
       std::string describe() const;
 

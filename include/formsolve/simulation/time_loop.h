@@ -65,6 +65,10 @@ namespace formsolve
       double       dof_steps        = 0; // sum over steps of the DoFs
       double       peak_memory_kb   = 0; // peak resident set, all ranks
       double       peak_memory_kb_max_rank = 0; // the same, largest rank
+      /// The local solves of a non-quadratic criterion, all ranks: count,
+      /// iterations, those over 6 iterations, the most one took.
+      double local_solves = 0, local_iterations = 0, local_long_solves = 0;
+      double local_most_iterations = 0;
       /// Peak resident set of the largest rank once the mesh, DoFs and
       /// matrix are set up, before the first factorisation.
       double setup_memory_kb_max_rank = 0;
