@@ -20,6 +20,9 @@ namespace formsolve
         , B(p.voce_amplitude)
         , C(p.voce_rate)
         , alpha(p.swift_weight)
+        , power(p.flow_curve == parameters::FlowCurve::hockett_sherby
+                  ? p.hockett_sherby_exponent
+                  : 1.)
         , m(p.rate_sensitivity)
         , rate0(p.reference_strain_rate)
     {}
@@ -58,12 +61,31 @@ namespace formsolve
       return {s0 + slope * (strain - e0), slope};
     }
 
+    std::pair<double, double> FlowStress::saturating(const double strain) const
+    {
+      if (power == 1.)
+        return {A - B * std::exp(-C * strain), B * C * std::exp(-C * strain)};
+      // Below eps_c the chord from 0: for p < 1 the slope B C p eps^(p-1)
+      // is infinite at 0, and Newton's tangent needs a finite one
+      // (doc/theory.md, eq. 2hs).
+      constexpr double eps_c = 1e-4;
+      if (strain < eps_c)
+        {
+          const double chord =
+            B * (1 - std::exp(-C * std::pow(eps_c, power))) / eps_c;
+          return {A - B + chord * std::max(strain, 0.), chord};
+        }
+      const double e = std::exp(-C * std::pow(strain, power));
+      return {A - B * e, B * C * power * std::pow(strain, power - 1) * e};
+    }
+
     double FlowStress::hardening(const double strain) const
     {
       using parameters::FlowCurve;
-      const double voce  = A - B * std::exp(-C * strain),
+      const double voce  = saturating(strain).first,
                    swift = K * (n == 0. ? 1. : std::pow(eps0 + strain, n));
-      return curve == FlowCurve::voce    ? voce
+      return curve == FlowCurve::voce || curve == FlowCurve::hockett_sherby
+               ? voce
              : curve == FlowCurve::table ? tabulated(strain).first
              : curve == FlowCurve::swift_voce
                ? alpha * swift + (1 - alpha) * voce
@@ -73,10 +95,11 @@ namespace formsolve
     double FlowStress::hardening_slope(const double strain) const
     {
       using parameters::FlowCurve;
-      const double voce = B * C * std::exp(-C * strain),
+      const double voce = saturating(strain).second,
                    swift =
                      n == 0. ? 0. : n * K * std::pow(eps0 + strain, n - 1);
-      return curve == FlowCurve::voce    ? voce
+      return curve == FlowCurve::voce || curve == FlowCurve::hockett_sherby
+               ? voce
              : curve == FlowCurve::table ? tabulated(strain).second
              : curve == FlowCurve::swift_voce
                ? alpha * swift + (1 - alpha) * voce

@@ -18,6 +18,10 @@ namespace formsolve
       if (p.flow_curve == parameters::FlowCurve::voce)
         flow << "flow curve: Voce, sigma = " << p.voce_saturation << " - "
              << p.voce_amplitude << " exp(-" << p.voce_rate << " eps) MPa";
+      else if (p.flow_curve == parameters::FlowCurve::hockett_sherby)
+        flow << "flow curve: Hockett-Sherby, sigma = " << p.voce_saturation
+             << " - " << p.voce_amplitude << " exp(-" << p.voce_rate << " eps^"
+             << p.hockett_sherby_exponent << ") MPa";
       else if (p.flow_curve == parameters::FlowCurve::swift_voce)
         flow << "flow curve: Swift-Voce, sigma = " << p.swift_weight << " "
              << p.strength_coefficient << " (" << p.prestrain << " + eps)^"

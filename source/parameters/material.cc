@@ -24,11 +24,12 @@ namespace formsolve
       const Choice<FractureMeasure> measure_names{
         {"through-thickness average", FractureMeasure::through_thickness},
         {"local", FractureMeasure::local}};
-      const Choice<FlowCurve> flow_curve_names{{"swift", FlowCurve::swift},
-                                               {"voce", FlowCurve::voce},
-                                               {"swift-voce",
-                                                FlowCurve::swift_voce},
-                                               {"table", FlowCurve::table}};
+      const Choice<FlowCurve> flow_curve_names{
+        {"swift", FlowCurve::swift},
+        {"voce", FlowCurve::voce},
+        {"swift-voce", FlowCurve::swift_voce},
+        {"hockett-sherby", FlowCurve::hockett_sherby},
+        {"table", FlowCurve::table}};
       const Choice<FlowExtrapolation> extrapolation_names{
         {"power law", FlowExtrapolation::power_law},
         {"last slope", FlowExtrapolation::last_slope},
@@ -192,7 +193,10 @@ namespace formsolve
             "exp(-C eps) (the Voce entries; Hardening exponent is then used "
             "only as the n-value of the Keeler-Brazier forming limit); "
             "swift-voce, alpha Swift + (1 - alpha) Voce with alpha = Swift "
-            "weight (both curves' entries); table, "
+            "weight (both curves' entries); hockett-sherby, sigma = A - B "
+            "exp(-C eps^p) (the Voce entries and Hockett-Sherby exponent p; "
+            "below eps = 1e-4 the chord from 0, where p < 1 makes the slope "
+            "infinite); table, "
             "the points of Flow curve file, linear in between (Hardening "
             "exponent likewise only for the forming limit). Each times "
             "(rate/rate0)^m.");
@@ -231,6 +235,11 @@ namespace formsolve
             voce_rate,
             number("-"),
             "C in the Voce curve (-), >= 0.");
+      d.add("Hockett-Sherby exponent",
+            hockett_sherby_exponent,
+            number("-", 0.05, 2),
+            "p in the Hockett-Sherby curve sigma = A - B exp(-C eps^p) "
+            "(-), with A, B, C the Voce entries; 1 is Voce's curve.");
       d.add("Swift weight",
             swift_weight,
             number("-", 0, 1),

@@ -54,20 +54,24 @@ namespace formsolve
         return m.tensile_strength;
       if (m.flow_curve == FlowCurve::table)
         return table_tensile_strength(m);
-      if (m.flow_curve == FlowCurve::swift_voce)
+      if (m.flow_curve == FlowCurve::swift_voce ||
+          m.flow_curve == FlowCurve::hockett_sherby)
         {
           // No closed form: h e^-eps on a fine grid (the maximum lies below
           // eps = n < 1 for any Swift part of a sheet; 3 covers it).
-          double best = 0;
+          const bool   hs   = m.flow_curve == FlowCurve::hockett_sherby;
+          const double w    = hs ? 0. : m.swift_weight;
+          const double p    = hs ? m.hockett_sherby_exponent : 1.;
+          double       best = 0;
           for (unsigned int k = 0; k <= 30000; ++k)
             {
               const double e = 3e-4 * k;
               const double h =
-                m.swift_weight * m.strength_coefficient *
+                w * m.strength_coefficient *
                   std::pow(m.prestrain + e, m.hardening_exponent) +
-                (1 - m.swift_weight) *
+                (1 - w) *
                   (m.voce_saturation -
-                   m.voce_amplitude * std::exp(-m.voce_rate * e));
+                   m.voce_amplitude * std::exp(-m.voce_rate * std::pow(e, p)));
               best = std::max(best, h * std::exp(-e));
             }
           return best;
@@ -90,6 +94,22 @@ namespace formsolve
         }
       return sigma_u * std::exp(-eps_u);
     }
+
+    namespace
+    {
+      /// The entry that sets the flow curve's stress scale, for messages.
+      const char *stress_scale_entry(const FlowCurve curve)
+      {
+        return curve == FlowCurve::voce || curve == FlowCurve::hockett_sherby
+                 ? "Material/Voce saturation stress = "
+               : curve == FlowCurve::table
+                 ? "Material/Flow curve file: its largest stress, "
+               : curve == FlowCurve::swift_voce
+                 ? "Material/Strength coefficient and Voce "
+                   "saturation stress, blended by Swift weight, "
+                 : "Material/Strength coefficient = ";
+      }
+    } // namespace
 
     SiebelEstimate siebel(const Run &run)
     {
@@ -141,14 +161,7 @@ namespace formsolve
             " mm is smaller than 1 mm; lengths are in mm, not m");
       const double stress = run.material.stress_scale();
       const auto   curve  = run.material.flow_curve;
-      const char  *scale  = curve == FlowCurve::voce
-                              ? "Material/Voce saturation stress = "
-                            : curve == FlowCurve::table
-                              ? "Material/Flow curve file: its largest stress, "
-                            : curve == FlowCurve::swift_voce
-                              ? "Material/Strength coefficient and Voce "
-                                "saturation stress, blended by Swift weight, "
-                              : "Material/Strength coefficient = ";
+      const char  *scale  = stress_scale_entry(curve);
       if (stress < 50)
         say(scale,
             stress,
@@ -158,13 +171,14 @@ namespace formsolve
         say("Tools/Punch/Speed = ",
             run.tools.punch_speed,
             " mm/s is below 0.01 mm/s; speeds are in mm/s, not m/s");
-      if ((curve == FlowCurve::voce || curve == FlowCurve::table) &&
+      if ((curve == FlowCurve::voce || curve == FlowCurve::table ||
+           curve == FlowCurve::hockett_sherby) &&
           run.material.forming_limit_table.empty())
         say("Material/Forming limit table is empty: the forming limit is "
             "Keeler-Brazier's from Material/Hardening exponent = ",
             run.material.hardening_exponent,
             ", which the ",
-            curve == FlowCurve::voce ? "Voce curve" : "table",
+            curve == FlowCurve::table ? "table" : "Voce curve",
             " does not set; give the sheet's FLC or its n-value");
       if (stress > 1e4)
         say(scale, stress, " MPa is above 10 GPa; stresses are in MPa, not Pa");

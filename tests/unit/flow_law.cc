@@ -11,6 +11,7 @@
 #include <formsolve/parameters/material.h>
 
 #include "check.h"
+#include "point_rate.h"
 
 #include <cmath>
 #include <string>
@@ -20,18 +21,7 @@ using namespace formsolve;
 
 namespace
 {
-  // A deviatoric strain rate of equivalent rate r (plane strain in x-y plus
-  // a little shear, so that D' (x) D' is not diagonal).
-  SymmetricTensor<2, 3> rate_of(const double r)
-  {
-    SymmetricTensor<2, 3> d;
-    d[0][0] = 1;
-    d[1][1] = -0.6;
-    d[2][2] = -0.4;
-    d[0][1] = 0.3;
-    d[1][2] = -0.2;
-    return d * (r / std::sqrt(2. / 3. * (d * d)));
-  }
+  using test::rate_of;
 
   double norm(const SymmetricTensor<2, 3> &t)
   {
@@ -188,5 +178,43 @@ int main()
   const material::RigidViscoplastic blend_law(p);
   for (const double r : {3e-5, 1e-2, 1.})
     check_tangent(blend_law, "Swift-Voce", r, strain, dt);
+
+  // Hockett-Sherby A - B exp(-C eps^p): closed form and slope above
+  // eps_c = 1e-4, the chord below (continuous at eps_c), p = 1 is Voce,
+  // and the tangent.
+  p.flow_curve              = parameters::FlowCurve::hockett_sherby;
+  p.hockett_sherby_exponent = 0.6;
+  p.validate();
+  const material::FlowStress hs(p);
+  for (const double e : {1e-3, 0.1, 0.5})
+    {
+      const double x = std::exp(-12.4 * std::pow(e, 0.6));
+      test::close("Hockett-Sherby: sigma(" + std::to_string(e) + ")",
+                  hs.value(e, 2.),
+                  (330.2 - 190.0 * x) * factor,
+                  1e-9);
+      test::close("Hockett-Sherby: slope at " + std::to_string(e),
+                  hs.d_strain(e, 2.),
+                  190.0 * 12.4 * 0.6 * std::pow(e, -0.4) * x * factor,
+                  1e-9);
+    }
+  const double at_c = 330.2 - 190.0 * std::exp(-12.4 * std::pow(1e-4, 0.6));
+  test::close("Hockett-Sherby: the chord's slope below 1e-4",
+              hs.d_strain(5e-5, 2.),
+              (at_c - (330.2 - 190.0)) / 1e-4 * factor,
+              1e-9);
+  test::close("Hockett-Sherby: continuous at 1e-4",
+              hs.value(1e-4 * (1 - 1e-12), 2.) / hs.value(1e-4, 2.),
+              1,
+              1e-10);
+  auto voce_p                    = p;
+  voce_p.hockett_sherby_exponent = 1;
+  test::close("Hockett-Sherby at p = 1 is Voce",
+              material::FlowStress(voce_p).value(0.3, 2.),
+              voce.value(0.3, 2.),
+              1e-12);
+  const material::RigidViscoplastic hs_law(p);
+  for (const double r : {3e-5, 1e-2, 1.})
+    check_tangent(hs_law, "Hockett-Sherby", r, strain, dt);
   return test::result();
 }

@@ -32,10 +32,11 @@ namespace formsolve
     /// The strain hardening of the flow stress (doc/theory.md, eq. 2).
     enum class FlowCurve
     {
-      swift,      // K (eps0 + eps)^n
-      voce,       // A - B exp(-C eps)
-      swift_voce, // alpha Swift + (1 - alpha) Voce
-      table       // points of Flow curve file, linear in between
+      swift,          // K (eps0 + eps)^n
+      voce,           // A - B exp(-C eps)
+      swift_voce,     // alpha Swift + (1 - alpha) Voce
+      hockett_sherby, // A - B exp(-C eps^p)
+      table           // points of Flow curve file, linear in between
     };
 
     /// A tabulated flow curve beyond its last point.
@@ -70,6 +71,7 @@ namespace formsolve
       double            voce_amplitude       = 0;     // B (MPa)
       double            voce_rate            = 0;     // C (-)
       double            swift_weight         = 0.5;   // alpha of swift-voce (-)
+      double            hockett_sherby_exponent = 1;  // p (-)
       std::string       flow_curve_file; // Flow curve = table: CSV path
       FlowExtrapolation flow_extrapolation = FlowExtrapolation::power_law;
       /// Its (strain, stress MPa) points, read by read_flow_curve().
@@ -117,7 +119,9 @@ namespace formsolve
       /// the largest tabulated stress.
       double stress_scale() const
       {
-        return flow_curve == FlowCurve::voce ? voce_saturation
+        return flow_curve == FlowCurve::voce ||
+                   flow_curve == FlowCurve::hockett_sherby
+                 ? voce_saturation
                : flow_curve == FlowCurve::swift_voce
                  ? swift_weight * strength_coefficient +
                      (1 - swift_weight) * voce_saturation
@@ -130,7 +134,8 @@ namespace formsolve
       bool has_voce() const
       {
         return flow_curve == FlowCurve::voce ||
-               flow_curve == FlowCurve::swift_voce;
+               flow_curve == FlowCurve::swift_voce ||
+               flow_curve == FlowCurve::hockett_sherby;
       }
 
       /// Flow curve = table: reads Flow curve file into flow_curve_points
