@@ -1,7 +1,9 @@
 """The earing cup (`doc/reference-scenes.md` (section 2)) with both Hill48
 calibrations, planar isotropy and the variants the scene asks for (holder
 force halved and doubled, the positional holder at 1.04 mm over the die,
-mu = 0.1, the Voce flow curve), quarter model on 2 ranks; written into
+mu = 0.1, the Voce flow curve) and Yld2004-18p with the two published
+coefficient sets (their own Voce curves and friction), quarter model on 2
+ranks; written into
 doc/forming-results.md between the earing markers, with
 doc/earing-profiles.png (cup height against the angle to RD) and
 doc/earing-sections.png (thickness along the 0, 45 and 90 degree sections).
@@ -32,6 +34,8 @@ RUNS = [
      {f"Tools/{t}/Friction coefficient": 0.1 for t in ("Punch", "Die", "Blank holder")}),
     ("r-values, Voce", "earing-AA6016-r-values.prm", VOCE),
     ("yield stresses, Voce", "earing-AA6016-yield-stresses.prm", VOCE),
+    ("Yld2004-18p, team 1", "earing-AA6016-yld2004-team1.prm", {}),
+    ("Yld2004-18p, team 2", "earing-AA6016-yld2004-team2.prm", {}),
 ]
 SECTIONS = (0, 45, 90)
 
@@ -108,8 +112,9 @@ def write(results):
     fig, ax = plt.subplots(figsize=(8, 4.5))
     for label, _ in results:
         a, h = profile(label)
+        main = "," not in label or label.startswith("Yld")
         if a:
-            ax.plot(a, h, label=label, lw=2 if "," not in label else 1, ls="-" if "," not in label else "--")
+            ax.plot(a, h, label=label, lw=2 if main else 1, ls="-" if main else "--")
     ax.set_xlabel("angle to the rolling direction (degrees)")
     ax.set_ylabel("cup height (mm)")
     ax.set_xticks(range(0, 91, 15))
@@ -118,12 +123,12 @@ def write(results):
     ax.set_title("Earing cup AA6016-T4, quarter model: cup height at the end of the draw")
     fig.tight_layout()
     fig.savefig(os.path.join(DOC, "earing-profiles.png"), dpi=110)
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharey=True)
-    for ax, label in zip(axes, ("r-values", "yield stresses")):
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.2), sharey=True)
+    for ax, label in zip(axes, ("r-values", "yield stresses", "Yld2004-18p, team 1")):
         for a in SECTIONS:
             pts = section(label, a)
             ax.plot([p[1] for p in pts], [p[2] for p in pts], "o-", ms=2, label=f"{a} degrees")
-        ax.set_title(f"Hill48 from {label}")
+        ax.set_title(label if label.startswith("Yld") else f"Hill48 from {label}")
         ax.set_xlabel("height of the mid-surface above the cup bottom (mm)")
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
