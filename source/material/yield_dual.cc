@@ -37,8 +37,8 @@ namespace formsolve
       {
         std::ostringstream m;
         m << "Yld2004-18p: the stress of the strain-rate deviator (" << e
-          << ") in the orthotropy frame was not found in 50 Newton "
-             "iterations (relative residual "
+          << ") in the orthotropy frame was not found by 50 Newton "
+             "iterations or a line search (relative residual "
           << residual
           << "); the coefficients may not give a strictly convex yield "
              "function (Material/Yld2004-18p C1, C2)";
@@ -83,8 +83,11 @@ namespace formsolve
             break;
           if (it == 50)
             fail(e0, norm);
-          const SymmetricTensor<2, 3> step =
-            -(deviatoric_inverse(g.hessian) * r);
+          SymmetricTensor<2, 3> step = -(deviatoric_inverse(g.hessian) * r);
+          // Where the surface is nearly flat (large exponents, a start on a
+          // flat face) the Newton step is huge: no longer than s itself.
+          if (step.norm() > s.norm())
+            step *= s.norm() / step.norm();
           // Backtracking on the convex objective g(s) - s : e; near the
           // solution its decrease (residual squared) drowns in rounding,
           // and a smaller residual accepts the step instead.
@@ -103,9 +106,12 @@ namespace formsolve
                   objective = value;
                 }
             }
-          // Nothing better within rounding of the eigenvalues: converged.
+          // Nothing better within rounding of the eigenvalues: converged;
+          // nothing better far from it: the same step would follow.
           if (!accepted && norm <= 1e-10)
             break;
+          if (!accepted)
+            fail(e0, norm);
         }
       out.iterations = it;
       out.stress     = n * s;

@@ -106,7 +106,7 @@ namespace formsolve
             "sections 3a, 3b).");
       d.add("Yield exponent",
             yield_exponent,
-            number("-", 2, 40),
+            number("-", 2, 30),
             "The exponent a of Yld2004-18p and Hosford (-): 2 with unit "
             "coefficients is von Mises; 6 for BCC, 8 for FCC metals.");
       d.add("Yld2004-18p C1",
