@@ -6,6 +6,7 @@ packages=(
   cmake make g++ libdeal.ii-dev     # deal.II 9.4 with Trilinos, p4est, PETSc, MPI, gmsh
   libmumps-dev libmetis-dev         # MUMPS C interface and METIS, called directly
   libcgal-dev                       # AABB trees of triangulated tool surfaces
+  libeigen3-dev                     # Levenberg-Marquardt of the Yld2004-18p fit
   libgmsh-dev                       # gmsh.h: tool surfaces from .msh, .geo, STEP, IGES
   libopenblas0-serial               # optimised BLAS for MUMPS (reference libblas3 is ~4x slower)
   openmpi-bin                       # mpirun

@@ -15,21 +15,31 @@ namespace formsolve
     {
       /// sigma_bar_calibrated = sigma_bar / k, eps_bar_calibrated = k
       /// eps_bar for Hill's normal anisotropy with r (anisotropy.md 4).
-      double normalisation(const parameters::Anisotropy &p)
+      double normalisation(const parameters::Anisotropy &p, const double r)
       {
         if (p.criterion == parameters::YieldCriterion::von_mises ||
             p.damage_normalisation ==
               parameters::DamageNormalisation::rolling_direction)
           return 1;
-        const double r = p.non_quadratic()
-                           ? Yld2004::from_parameters(p).mean_r()
-                           : Hill48::from_parameters(p).mean_r();
         return std::sqrt(2 * (2 + r) / (3 * (1 + r)));
+      }
+
+      double mean_r(const parameters::Anisotropy &p)
+      {
+        if (p.criterion == parameters::YieldCriterion::von_mises)
+          return 1;
+        return p.non_quadratic() ? Yld2004::from_parameters(p).mean_r()
+                                 : Hill48::from_parameters(p).mean_r();
       }
     } // namespace
 
     DamageCriteria::DamageCriteria(const parameters::Material &p)
-        : k(normalisation(p.anisotropy))
+        : DamageCriteria(p, mean_r(p.anisotropy))
+    {}
+
+    DamageCriteria::DamageCriteria(const parameters::Material &p,
+                                   const double                mean_r)
+        : k(normalisation(p.anisotropy, mean_r))
         , a(p.oyane_a / k)
         , b(p.oyane_b / (k * k))
         , critical(p.cockcroft_latham / k)

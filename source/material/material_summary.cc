@@ -71,6 +71,9 @@ namespace formsolve
           s << "yield criterion: " << p.anisotropy.describe() << ": " << hill
             << "; RD at " << p.anisotropy.rolling_direction << " deg to x";
           lines.push_back(s.str());
+          if (law.non_quadratic() &&
+              !law.non_quadratic()->fit_headline().empty())
+            lines.push_back(law.non_quadratic()->fit_headline());
         }
 
       std::ostringstream f;

@@ -4,8 +4,11 @@
 #include <deal.II/physics/notation.h>
 
 #include <formsolve/material/directional.h>
+#include <formsolve/material/yield_fit.h>
 #include <formsolve/material/yld2004.h>
 #include <formsolve/parameters/anisotropy.h>
+
+#include <boost/math/tools/roots.hpp>
 
 #include <array>
 #include <cmath>
@@ -130,18 +133,29 @@ namespace formsolve
 
     Yld2004 Yld2004::from_parameters(const parameters::Anisotropy &p)
     {
-      const Yld2004 f(p.yld_coefficients(1),
-                      p.yld_coefficients(2),
-                      p.yield_exponent);
+      const bool fitted =
+        p.criterion == parameters::YieldCriterion::yld2004_18p &&
+        p.yld_source == parameters::YldCoefficients::fitted;
+      const YldFit fit = fitted ? fit_yld2004(p) : YldFit();
+      Yld2004      f(fitted ? fit.c1 : p.yld_coefficients(1),
+                fitted ? fit.c2 : p.yld_coefficients(2),
+                p.yield_exponent);
+      if (fitted)
+        {
+          f.fit_report = fit.report;
+          f.headline   = fit.headline;
+        }
+      const std::string entries =
+        fitted ? "The Yld2004-18p set fitted to Material/Yld2004-18p fit"
+               : "Material/Yld2004-18p C1, C2";
       AssertThrow(std::isfinite(f.scale) && f.scale > 0,
-                  ExcMessage("Material/Yld2004-18p C1, C2 give no yield "
-                             "stress in uniaxial tension along RD"));
+                  ExcMessage(entries + " give no yield stress in uniaxial "
+                                       "tension along RD"));
       const SymmetricTensor<2, 3> s = f.least_convex();
       if (s.norm() > 0)
         {
           std::ostringstream m;
-          m << "Material/Yld2004-18p C1, C2 (with Yield exponent = "
-            << p.yield_exponent
+          m << entries << " (with Yield exponent = " << p.yield_exponent
             << ") give a yield function that is not strictly convex: its "
                "curvature vanishes at the deviatoric stress direction ("
             << s << "); the flow rule has no unique stress there";
@@ -322,6 +336,40 @@ namespace formsolve
       return 1 / equivalent(b);
     }
 
+    double Yld2004::biaxial_r() const
+    {
+      SymmetricTensor<2, 3> b;
+      b[0][0] = b[1][1]             = 1;
+      const SymmetricTensor<2, 3> D = half_square(b).gradient;
+      return D[1][1] / D[0][0];
+    }
+
+    double Yld2004::plane_strain_ratio() const
+    {
+      // The TD stress ratio t of sigma = diag(1, t, 0) at which the TD
+      // rate dg/dsigma_22 vanishes: increasing in t (convexity), negative
+      // in uniaxial RD tension (t = 0), positive at t = 1 for any sheet
+      // that thins in balanced-biaxial tension.
+      const auto td_rate = [this](const double t) {
+        SymmetricTensor<2, 3> s;
+        s[0][0]      = 1;
+        s[1][1]      = t;
+        const auto h = half_square(s);
+        return std::make_pair(h.gradient[1][1], h.hessian[1][1][1][1]);
+      };
+      std::uintmax_t iterations = 50;
+      const double   t = boost::math::tools::newton_raphson_iterate(td_rate,
+                                                                  0.5,
+                                                                  0.,
+                                                                  1.,
+                                                                  40,
+                                                                  iterations);
+      SymmetricTensor<2, 3> s;
+      s[0][0] = 1;
+      s[1][1] = t;
+      return 1 / equivalent(s);
+    }
+
     double Yld2004::mean_r() const
     {
       return (r_value(0) + 2 * r_value(M_PI / 4) + r_value(M_PI / 2)) / 4;
@@ -336,7 +384,9 @@ namespace formsolve
       for (int angle = 15; angle <= 90; angle += 15)
         s << "\nstress_ratio_" << angle << " = "
           << stress_ratio(angle * M_PI / 180);
-      s << "\nstress_ratio_biaxial = " << biaxial_ratio();
+      s << "\nstress_ratio_biaxial = " << biaxial_ratio()
+        << "\nr_biaxial = " << biaxial_r()
+        << "\nstress_ratio_plane_strain = " << plane_strain_ratio();
       return s.str();
     }
   } // namespace material

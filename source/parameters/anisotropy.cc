@@ -21,6 +21,9 @@ namespace formsolve
       const Choice<HillCalibration> calibration_names{
         {"r-values", HillCalibration::r_values},
         {"yield stresses", HillCalibration::yield_stresses}};
+      const Choice<YldCoefficients> yld_source_names{
+        {"given", YldCoefficients::given},
+        {"fitted", YldCoefficients::fitted}};
       const Choice<TransverseShear> shear_names{
         {"equal to N", TransverseShear::equal_to_n},
         {"isotropic", TransverseShear::isotropic}};
@@ -60,6 +63,8 @@ namespace formsolve
         {
           // Which coefficient sets leave the sheet plane isotropic has no
           // simple closed form: anything but Hosford's unit set counts.
+          if (yld_source == YldCoefficients::fitted)
+            return true;
           for (const unsigned int w : {1u, 2u})
             for (const double c : yld_coefficients(w))
               if (c != 1)
@@ -84,7 +89,9 @@ namespace formsolve
         return "Hosford, a = " + str(yield_exponent);
       if (criterion == YieldCriterion::yld2004_18p)
         return "Yld2004-18p, a = " + str(yield_exponent) +
-               ", C' = " + joined(yld_c1) + ", C'' = " + joined(yld_c2);
+               (yld_source == YldCoefficients::fitted
+                  ? ", fitted to the data of Material/Yld2004-18p fit"
+                  : ", C' = " + joined(yld_c1) + ", C'' = " + joined(yld_c2));
       if (calibration == HillCalibration::r_values)
         return "Hill48 from r-values " + joined(r_values);
       return "Hill48 from yield stress ratios " + joined(yield_stress_ratios) +
@@ -123,6 +130,16 @@ namespace formsolve
             numbers("-", 7, 9),
             "The coefficients of the second linear transformation C'' (-), "
             "in the order of Yld2004-18p C1.");
+      d.add("Yld2004-18p coefficients",
+            yld_source,
+            yld_source_names,
+            "given: Yld2004-18p C1, C2 as entered. fitted: c12, c13, c21, "
+            "c23, c31, c32 and c66 of both are fitted by least squares to "
+            "the data of subsection Yld2004-18p fit, starting from C1, C2 "
+            "(c44, c55 stay as given); the run summary prints the fitted "
+            "coefficients, the fit next to the data and the RMS errors "
+            "(doc/theory.md eq. 3g).");
+      fit.declare(d);
       d.add(
         "Hill calibration",
         calibration,
@@ -208,6 +225,9 @@ namespace formsolve
                     ", G = " + str(G) + ", H = " + str(H) + ", N = " + str(N) +
                     "); check the ratios");
         }
+      if (criterion == YieldCriterion::yld2004_18p &&
+          yld_source == YldCoefficients::fitted)
+        fit.validate(14);
       for (const auto *c : {&yld_c1, &yld_c2})
         require(c->size() == 7 || c->size() == 9,
                 c == &yld_c1 ? "Material/Yld2004-18p C1"

@@ -33,7 +33,7 @@ namespace formsolve
         // run() cannot deadlock in the timer's destructor.
         , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
         , material(run.material)
-        , damage(run.material)
+        , damage(run.material, material.mean_r())
         , state(run, comm)
         , history_update(material,
                          state.kinematics,

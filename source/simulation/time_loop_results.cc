@@ -224,6 +224,10 @@ namespace formsolve
         << "\nyield_criterion = " << prm.material.anisotropy.describe() << "\n"
         << material.criterion_summary()
         << (material.non_quadratic() ? local_solve_lines(summary) : "")
+        << (material.non_quadratic() &&
+                !material.non_quadratic()->fit_lines().empty()
+              ? "\n" + material.non_quadratic()->fit_lines()
+              : "")
         << "\nfracture_constants_conversion_k = " << damage.conversion()
         << "\noyane_a_used = " << damage.a_used()
         << "\noyane_b_used = " << damage.b_used() << "\nfracture_criterion = "

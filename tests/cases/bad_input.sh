@@ -257,6 +257,16 @@ expect yld_exponent_range "Material/Yield exponent=1\": \`1\` is not accepted; i
   --set "Material/Yield criterion=Hosford" --set "Material/Yield exponent=1"
 expect yld_planar_axisymmetric "Material/Yld2004-18p C1: planar anisotropy" "$cases/cup-axisymmetric.prm" \
   --set "Material/Yield criterion=Yld2004-18p" --set "Material/Yld2004-18p C1=1, 1, 1, 1, 1, 1, 1.2"
+expect yld_fit_too_few_data "Material/Yld2004-18p fit/Stress ratios: the fit of Yld2004-18p's 14 coefficients needs at least as many data, got 5" "$base" \
+  --set "Material/Yield criterion=Yld2004-18p" --set "Material/Yld2004-18p coefficients=fitted" \
+  --set "Material/Yld2004-18p fit/Angles=0, 45, 90" --set "Material/Yld2004-18p fit/Stress ratios=1, 0.9, 0.95" \
+  --set "Material/Yld2004-18p fit/R-values=0.5, 0.3, 0.6"
+expect yld_fit_count "Material/Yld2004-18p fit/R-values: needs one value per angle of Material/Yld2004-18p fit/Angles (7), got 3" "$base" \
+  --set "Material/Yield criterion=Yld2004-18p" --set "Material/Yld2004-18p coefficients=fitted" \
+  --set "Material/Yld2004-18p fit/R-values=0.5, 0.3, 0.6"
+expect yld_fit_angle "Material/Yld2004-18p fit/Angles: must lie in 0 to 90 degrees, got 120" "$base" \
+  --set "Material/Yield criterion=Yld2004-18p" --set "Material/Yld2004-18p coefficients=fitted" \
+  --set "Material/Yld2004-18p fit/Angles=0, 45, 120"
 expect hosford_springback "Material/Yield criterion: is Hosford, a = 8: the springback release returns to a quadratic yield surface" "$base" \
   --set "Material/Yield criterion=Hosford" --set "Springback/Enabled=true" --set "Material/Young's modulus=2e5"
 expect gap_from_part_negative "Tools/Die/Gap: must not be negative with 'Gap measured from' = part" "$base" \

@@ -20,6 +20,9 @@ namespace formsolve
     {
     public:
       explicit DamageCriteria(const parameters::Material &p);
+      /// With the criterion's mean r-value (r0 + 2 r45 + r90)/4 known, as
+      /// the point law has it: no second fit of a fitted Yld2004-18p set.
+      DamageCriteria(const parameters::Material &p, const double mean_r);
 
       /// Increments over a step with deviatoric stress @p s, mean stress
       /// @p mean (MPa, tension positive), equivalent stress @p equivalent

@@ -134,6 +134,11 @@ namespace formsolve
       /// "key = value" lines of the criterion's coefficients and its
       /// r-values and stress ratios (run summary).
       std::string criterion_summary() const;
+      /// The criterion's (r0 + 2 r45 + r90)/4.
+      double mean_r() const
+      {
+        return yld ? yld->mean_r() : coefficients.mean_r();
+      }
       /// The local solves of the non-quadratic laws on this process.
       const DualStatistics &local_solves() const { return statistics; }
       /// The angle of RD from x (radians).

@@ -64,12 +64,22 @@ namespace formsolve
       double r_value(const double angle) const;
       /// Balanced-biaxial flow stress over RD's.
       double biaxial_ratio() const;
+      /// TD over RD strain rate in balanced-biaxial tension.
+      double biaxial_r() const;
+      /// RD stress of plane-strain tension along RD (no TD strain rate,
+      /// no normal stress) over the RD uniaxial flow stress.
+      double plane_strain_ratio() const;
       /// (r0 + 2 r45 + r90)/4.
       double mean_r() const;
 
       /// "key = value" lines: the exponent, sigma/sigma_0 and r every 15
-      /// degrees, sigma_b/sigma_0 (run summary).
+      /// degrees, the biaxial and plane-strain points (run summary).
       std::string summary() const;
+      /// Where the coefficients were fitted: "key = value" lines of the
+      /// fitted coefficients, each datum beside the fit and the RMS errors
+      /// (run summary), and one line of it (the run's header); else empty.
+      const std::string &fit_lines() const { return fit_report; }
+      const std::string &fit_headline() const { return headline; }
 
       double exponent() const { return a; }
 
@@ -84,6 +94,7 @@ namespace formsolve
       Mandel6x6             M1, M2; // the same as 6x6 matrices
       double                a;
       double                scale = 1; // 1/sigma_bar of unit RD tension
+      std::string           fit_report, headline; // fitted coefficients
     };
   } // namespace material
 } // namespace formsolve

@@ -6,6 +6,8 @@
 // (doc/theory.md, sections 3a, 3b).
 #pragma once
 
+#include <formsolve/parameters/yield_fit.h>
+
 #include <string>
 #include <vector>
 
@@ -27,6 +29,13 @@ namespace formsolve
     {
       r_values,      // r0, r45, r90 (or one normal r)
       yield_stresses // sigma45/sigma0, sigma90/sigma0 (and sigma_b/sigma0)
+    };
+
+    /// Where Yld2004-18p's coefficients come from.
+    enum class YldCoefficients
+    {
+      given, // Yld2004-18p C1, C2 as entered
+      fitted // least squares to subsection Yld2004-18p fit, from C1, C2
     };
 
     /// Hill's L and M (the shear coefficients of the planes through ND),
@@ -56,9 +65,11 @@ namespace formsolve
       std::vector<double> r_values    = {1.};
       std::vector<double> yield_stress_ratios; // empty: not given
       // c12, c13, c21, c23, c31, c32, (c44, c55,) c66 of C' and C''.
-      std::vector<double> yld_c1            = {1, 1, 1, 1, 1, 1, 1};
-      std::vector<double> yld_c2            = {1, 1, 1, 1, 1, 1, 1};
-      double              yield_exponent    = 8;
+      std::vector<double> yld_c1         = {1, 1, 1, 1, 1, 1, 1};
+      std::vector<double> yld_c2         = {1, 1, 1, 1, 1, 1, 1};
+      double              yield_exponent = 8;
+      YldCoefficients     yld_source     = YldCoefficients::given;
+      YieldFit            fit;
       TransverseShear     transverse_shear  = TransverseShear::equal_to_n;
       double              rolling_direction = 0; // degrees from x, 3-D
       DamageNormalisation damage_normalisation =
