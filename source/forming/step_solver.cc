@@ -40,6 +40,12 @@ namespace formsolve
           const double              dt = std::min(control.time_step(), max_dt);
           const state::StepSnapshot start = state.snapshot();
           state.tools.begin_step(dt);
+          // Set forces that follow the punch travel take their value at
+          // the step's end, as the other unknowns.
+          const unsigned int punch = state.tools.punch_index();
+          state.set_force_targets(state.tools.punch_travel() +
+                                  dt * (state.tools[punch].velocity() *
+                                        state.tools.motion(punch).direction));
           system.begin_step(dt);
           // The previous step's velocity is the predictor, corrected where
           // it lifts nodes in contact off their tools.

@@ -60,13 +60,18 @@ namespace formsolve
             "Motion = prescribed: the tool stops after this "
             "travel (mm), landing on it exactly; 0: it moves "
             "for the whole run.");
-      d.add("Force",
-            force,
-            number("N", 0),
-            "Motion = force: the force the tool exerts on the "
-            "sheet along Direction (N, > 0), for the full part "
-            "(the model's share is taken by the symmetry "
-            "factor).");
+      d.declare("Force",
+                "0",
+                text("a force in N, or a table 'travel:force, ...' (mm:N)"),
+                "Motion = force: the force the tool exerts on the sheet "
+                "along Direction (N, > 0), for the full part (the model's "
+                "share is taken by the symmetry factor); one number, or a "
+                "table 'travel:force, ...' over the punch travel (mm), as "
+                "Tools/Blank holder/Force: a holder segment with its own "
+                "cushion curve.",
+                [this](const std::string &t) {
+                  force = ForceCurve::read(t, "Tools/" + name + "/Force");
+                });
       d.add("Refinement level",
             refinement_level,
             whole_number(0, 10),
@@ -104,7 +109,8 @@ namespace formsolve
       if (motion == ToolMotion::prescribed)
         require_positive(speed, e + "Speed", "mm/s");
       else
-        require_positive(force, e + "Force", "N");
+        for (const auto &point : force.points)
+          require_positive(point.second, e + "Force", "N");
     }
 
     std::vector<std::string> additional_tool_names(

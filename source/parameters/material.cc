@@ -1,6 +1,7 @@
 #include <formsolve/parameters/declared.h>
 #include <formsolve/parameters/flow_curve_file.h>
 #include <formsolve/parameters/material.h>
+#include <formsolve/parameters/number_pairs.h>
 #include <formsolve/parameters/require.h>
 
 #include <cmath>
@@ -60,35 +61,15 @@ namespace formsolve
       /// "minor:major, ..." -> pairs; throws naming the entry.
       std::vector<std::pair<double, double>> parse_table(const std::string &t)
       {
-        std::vector<std::pair<double, double>> points;
-        std::string                            item;
-        std::istringstream                     in(t);
-        while (std::getline(in, item, ','))
-          {
-            if (item.find_first_not_of(" \t") == std::string::npos)
-              continue;
-            const auto colon = item.find(':');
-            double     a = 0, b = 0;
-            char      *end = nullptr;
-            bool       ok  = colon != std::string::npos;
-            if (ok)
-              {
-                const std::string x = item.substr(0, colon),
-                                  y = item.substr(colon + 1);
-                a                   = std::strtod(x.c_str(), &end);
-                ok                  = end != x.c_str() && std::isfinite(a);
-                b                   = std::strtod(y.c_str(), &end);
-                ok = ok && end != y.c_str() && std::isfinite(b) && b > 0;
-              }
-            require(ok,
-                    "Material/Forming limit table",
-                    "'" + item +
-                      "' is not 'minor:major' with finite true strains and a "
-                      "positive major strain");
-            points.emplace_back(a, b);
-          }
+        const std::string entry  = "Material/Forming limit table";
+        const auto        points = read_pairs(t, entry, "minor:major");
+        for (const auto &[minor, major] : points)
+          require(major > 0,
+                  entry,
+                  "'" + str(minor) + ":" + str(major) +
+                    "' has no positive major strain");
         require(points.empty() || points.size() >= 2,
-                "Material/Forming limit table",
+                entry,
                 "needs at least two points");
         return points;
       }

@@ -212,10 +212,10 @@ namespace formsolve
       const auto  s     = siebel(run);
       const auto &tools = run.tools;
       if (s.applies && tools.holder_control == HolderControl::force &&
-          (tools.holder_force < 0.1 * s.force ||
-           tools.holder_force > 10 * s.force))
+          (tools.holder_force.smallest() < 0.1 * s.force ||
+           tools.holder_force.largest() > 10 * s.force))
         say("Tools/Blank holder/Force = ",
-            tools.holder_force,
+            tools.holder_force.text(),
             " N is far from Siebel's estimate ",
             std::round(s.force),
             " N (p = ",

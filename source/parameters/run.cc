@@ -56,7 +56,7 @@ namespace formsolve
                   "Tools/Blank holder/Force",
                   "siebel needs a round blank larger than a round holder "
                   "opening and a round punch; give the force in N");
-          tools.holder_force = s.force;
+          tools.holder_force = ForceCurve::constant(s.force);
         }
     }
 

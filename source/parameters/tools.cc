@@ -63,11 +63,15 @@ namespace formsolve
       d.declare(
         "Force",
         "2671",
-        text("a force in N (a number >= 0) or `siebel`"),
-        "Blank-holder force for Control = force (N, >= 0), for the full "
-        "part (the model's share is taken by the symmetry factor); or "
-        "'siebel': Siebel's rule p = 0.0025 [(d0/d_p - 1)^2 + d_p/(200 t0)] "
-        "R_m on the initial flange under the holder, with R_m = "
+        text("a force in N (>= 0), a table 'travel:force, ...' (mm:N), or "
+             "`siebel`"),
+        "Blank-holder force for Control = force (N, > 0), for the full part "
+        "(the model's share is taken by the symmetry factor): one number for "
+        "the whole stroke, or a cushion curve 'travel:force, travel:force, "
+        "...' of punch travel (mm, increasing from 0 or later) and force "
+        "(N), linear in between and held at the end values beyond; or "
+        "'siebel': Siebel's rule p = 0.0025 [(d0/d_p - 1)^2 + d_p/(200 "
+        "t0)] R_m on the initial flange under the holder, with R_m = "
         "Material/Tensile strength (round blank, punch and holder; the value "
         "is printed). A force below 1/10 or above 10 times Siebel's gets a "
         "warning.",
@@ -77,16 +81,8 @@ namespace formsolve
     void Tools::read_holder_force(const std::string &force)
     {
       holder_force_by_siebel = force == "siebel";
-      if (holder_force_by_siebel)
-        return;
-      char *end    = nullptr;
-      holder_force = std::strtod(force.c_str(), &end);
-      require(end != force.c_str() && *end == '\0' &&
-                std::isfinite(holder_force) && holder_force >= 0,
-              "Tools/Blank holder/Force",
-              "`" + force +
-                "` is not accepted; it takes a force in N (a number >= 0) "
-                "or `siebel`");
+      if (!holder_force_by_siebel)
+        holder_force = ForceCurve::read(force, "Tools/Blank holder/Force");
     }
 
     void Tools::declare_additional(Declarations                   &d,
@@ -137,7 +133,8 @@ namespace formsolve
       require_positive(punch_stroke, "Tools/Punch/Stroke", "mm");
       if (blank_holder.enabled && holder_control == HolderControl::force)
         {
-          require_positive(holder_force, "Tools/Blank holder/Force", "N");
+          for (const auto &point : holder_force.points)
+            require_positive(point.second, "Tools/Blank holder/Force", "N");
           require(blank_holder.shape != ToolShape::flat,
                   "Tools/Blank holder/Control",
                   "force needs a holder with an opening (Shape round, "

@@ -265,7 +265,10 @@ namespace formsolve
           for (const double a : earing.ear_angles)
             f << ' ' << a;
         }
-      f << "\nblank_holder_force = " << prm.tools.holder_force
+      f << "\nblank_holder_force = " << prm.tools.holder_force.at(0)
+        << (prm.tools.holder_force.varies()
+              ? "\nblank_holder_force_curve = " + prm.tools.holder_force.text()
+              : "")
         << "\nironing_travel = " << summary.ironing_travel
         << "\nmax_ironing_force = " << summary.max_ironing_force
         << "\nmax_ironing_pressure = " << summary.max_ironing_pressure;

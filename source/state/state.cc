@@ -30,8 +30,8 @@ namespace formsolve
         , tools(run.tools, run.contact, run.geometry.thickness)
     {
       for (const unsigned int t : tools.force_controlled())
-        force_controls.push_back(
-          {t, tools.motion(t).force / run.geometry.symmetry_factor()});
+        force_controls.push_back({t});
+      set_force_targets(0);
     }
 
     template <int dim>
@@ -159,6 +159,14 @@ namespace formsolve
         if (c.tool == t)
           return &c;
       return nullptr;
+    }
+
+    template <int dim>
+    void State<dim>::set_force_targets(const double punch_travel)
+    {
+      for (auto &c : force_controls)
+        c.target = tools.motion(c.tool).force.at(punch_travel) /
+                   prm.geometry.symmetry_factor();
     }
 
     template <int dim>

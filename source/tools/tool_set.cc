@@ -154,13 +154,13 @@ namespace formsolve
       add(p.punch,
           -1,
           +1,
-          {ToolMotion::prescribed, down, p.punch_speed, 0, 0},
+          {ToolMotion::prescribed, down, p.punch_speed, 0, {}},
           0,
           c,
           thickness);
       if (p.die.enabled)
         die = tools.size();
-      add(p.die, +1, -1, {ToolMotion::fixed, down, 0, 0, 0}, 0, c, thickness);
+      add(p.die, +1, -1, {ToolMotion::fixed, down, 0, 0, {}}, 0, c, thickness);
       if (p.blank_holder.enabled)
         holder = tools.size();
       const bool held = p.holder_control == parameters::HolderControl::force;

@@ -136,6 +136,12 @@ expect slice_round "Geometry/Blank shape: must be rectangle for Model = slice" "
   --set "Geometry/Blank shape=round"
 expect zero_holder_force "Tools/Blank holder/Force" "$base" --set "Tools/Blank holder/Enabled=true" \
   --set "Tools/Blank holder/Force=0"
+expect holder_curve_order "Tools/Blank holder/Force: the punch travels must increase: 10 is followed by 5" "$base" \
+  --set "Tools/Blank holder/Enabled=true" --set "Tools/Blank holder/Force=0:1000, 10:2000, 5:3000"
+expect holder_curve_item "Tools/Blank holder/Force: '10 2000' is not 'travel:force' with finite numbers" "$base" \
+  --set "Tools/Blank holder/Enabled=true" --set "Tools/Blank holder/Force=0:1000, 10 2000"
+expect holder_curve_zero "Tools/Blank holder/Force: must be positive (N), got 0" "$base" \
+  --set "Tools/Blank holder/Enabled=true" --set "Tools/Blank holder/Force=0:1000, 10:0"
 expect flat_holder_force "Tools/Blank holder/Control" "$base" --set "Tools/Blank holder/Enabled=true" \
   --set "Tools/Blank holder/Shape=flat"
 expect minimum_above_step "Time stepping/Minimum time step" "$base" --set "Time stepping/Minimum time step=1"

@@ -4,6 +4,7 @@
 // direction, or under a set force along a direction.
 #pragma once
 
+#include <formsolve/parameters/force_curve.h>
 #include <formsolve/parameters/tool.h>
 
 #include <array>
@@ -27,9 +28,9 @@ namespace formsolve
       bool                  solid_inside = true; // Solid: inside or outside
       ToolMotion            motion       = ToolMotion::fixed;
       std::array<double, 3> direction{{0, 0, -1}}; // unit, x y z
-      double                speed            = 1;  // mm/s (prescribed)
-      double                stroke           = 0;  // mm; 0: the whole run
-      double                force            = 0;  // N, full part (force)
+      double                speed  = 1;            // mm/s (prescribed)
+      double                stroke = 0;            // mm; 0: the whole run
+      ForceCurve            force;                 // N, full part (force)
       unsigned int          refinement_level = 0;
 
       /// The entries of subsection Tools/<name>, bound to these members.

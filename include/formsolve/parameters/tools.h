@@ -3,6 +3,7 @@
 #pragma once
 
 #include <formsolve/parameters/additional_tool.h>
+#include <formsolve/parameters/force_curve.h>
 #include <formsolve/parameters/tool.h>
 
 #include <string>
@@ -28,8 +29,8 @@ namespace formsolve
       double punch_stroke = 30; // mm, total punch travel (bound of the run)
       double punch_speed  = 1;  // mm/s, in -z
 
-      HolderControl holder_control         = HolderControl::force;
-      double        holder_force           = 2671;  // N, full part
+      HolderControl holder_control = HolderControl::force;
+      ForceCurve    holder_force   = ForceCurve::constant(2671); // N, full part
       bool          holder_force_by_siebel = false; // Force = siebel
 
       std::vector<AdditionalTool> additional;

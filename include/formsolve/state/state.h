@@ -116,7 +116,11 @@ namespace formsolve
       /// ranks.
       double min_distance(const unsigned int t) const;
       /// The force control of tool @p t, or nullptr.
-      ForceControl       *force_control(const unsigned int t);
+      ForceControl *force_control(const unsigned int t);
+      /// Each control's target at @p punch_travel (the end of the step):
+      /// its tool's force curve (a cushion curve, or constant), the
+      /// model's share.
+      void                set_force_targets(const double punch_travel);
       const ForceControl *force_control(const unsigned int t) const;
       /// The velocities and the activity of the force controls.
       std::vector<double> control_velocities() const;

@@ -23,10 +23,10 @@ namespace formsolve
       parameters::ToolMotion kind = parameters::ToolMotion::fixed;
       /// Unit direction of the motion (prescribed) or of the force on the
       /// sheet (force).
-      Tensor<1, dim> direction;
-      double         speed  = 0; // mm/s (prescribed)
-      double         stroke = 0; // mm; 0: no end (prescribed)
-      double         force  = 0; // N on the full part (force)
+      Tensor<1, dim>         direction;
+      double                 speed  = 0; // mm/s (prescribed)
+      double                 stroke = 0; // mm; 0: no end (prescribed)
+      parameters::ForceCurve force;      // N on the full part (force)
     };
 
     template <int dim>

@@ -1,0 +1,20 @@
+// Tables typed into one entry as "a:b, a:b, ...": the forming limit curve
+// (minor:major strain), a force over the punch travel (travel:force).
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace formsolve
+{
+  namespace parameters
+  {
+    /// The pairs of @p text (empty items skipped); an item that is not two
+    /// finite numbers around a colon throws naming @p entry and @p form
+    /// ("minor:major").
+    std::vector<std::pair<double, double>> read_pairs(const std::string &text,
+                                                      const std::string &entry,
+                                                      const std::string &form);
+  } // namespace parameters
+} // namespace formsolve
