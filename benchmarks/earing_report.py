@@ -36,6 +36,17 @@ RUNS = [
     ("yield stresses, Voce", "earing-AA6016-yield-stresses.prm", VOCE),
     ("Yld2004-18p, team 1", "earing-AA6016-yld2004-team1.prm", {}),
     ("Yld2004-18p, team 2", "earing-AA6016-yld2004-team2.prm", {}),
+    ("Yld2004-18p, fitted by formsolve", "earing-AA6016-yld2004-fit.prm", {}),
+    ("Yld2004-18p, fitted by formsolve, 1 start", "earing-AA6016-yld2004-fit.prm",
+     {"Material/Yld2004-18p fit/Starts": 1}),
+    ("Yld2004-18p, team 1, holder 1150 N", "earing-AA6016-yld2004-team1.prm",
+     {"Tools/Blank holder/Force": 1150}),
+    ("Yld2004-18p, team 1, holder 4600 N", "earing-AA6016-yld2004-team1.prm",
+     {"Tools/Blank holder/Force": 4600}),
+    ("Yld2004-18p, team 1, mu = 0.07", "earing-AA6016-yld2004-team1.prm",
+     {f"Tools/{t}/Friction coefficient": 0.07 for t in ("Punch", "Die", "Blank holder")}),
+    ("Yld2004-18p, team 1, 3 layers", "earing-AA6016-yld2004-team1.prm",
+     {"Mesh/Layers through thickness": 3}),
 ]
 SECTIONS = (0, 45, 90)
 
@@ -112,7 +123,7 @@ def write(results):
     fig, ax = plt.subplots(figsize=(8, 4.5))
     for label, _ in results:
         a, h = profile(label)
-        main = "," not in label or label.startswith("Yld")
+        main = "," not in label or (label.startswith("Yld") and label.count(",") == 1)
         if a:
             ax.plot(a, h, label=label, lw=2 if main else 1, ls="-" if main else "--")
     ax.set_xlabel("angle to the rolling direction (degrees)")

@@ -70,7 +70,7 @@ namespace test
   {
     prm.material.anisotropy.rolling_direction = -theta;
     const material::RigidViscoplastic material(prm.material);
-    const material::DamageCriteria    damage(prm.material);
+    const material::DamageCriteria    damage(prm.material, material.mean_r());
     state::State<3>                   state(prm, MPI_COMM_WORLD);
     const solver::Assembler<3>        assembler(material,
                                          state.kinematics,

@@ -111,7 +111,7 @@ namespace
   {
     using test::L, test::W, test::T, test::V, test::dt;
     const material::RigidViscoplastic material(prm.material);
-    const material::DamageCriteria    damage(prm.material);
+    const material::DamageCriteria    damage(prm.material, material.mean_r());
     state::State<3>                   state(prm, MPI_COMM_WORLD);
     const solver::Assembler<3>        assembler(material,
                                          state.kinematics,
