@@ -182,7 +182,11 @@ int main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   AssertThrow(argc == 2, ExcMessage("usage: test_material_card <card.prm>"));
   std::cout.precision(12);
-  const parameters::Run prm = test::block(read_card(argv[1]));
+  parameters::Run prm = test::block(read_card(argv[1]));
+  // A fitted set from 4 starts, for the Debug build's time: the block
+  // checks the card's path to the law, not the fit's quality.
+  auto &fit  = prm.material.anisotropy.fit;
+  fit.starts = std::min(fit.starts, 4u);
   std::cout << "card " << argv[1] << ": " << prm.material.anisotropy.describe()
             << "\n";
   check_flow_curve(prm);
