@@ -64,25 +64,40 @@ namespace test
     double oyane_per_axial_strain; // I over the step's axial strain
   };
 
+  /// The law, the state and the operators of one block run, its mesh made.
+  struct BlockRun
+  {
+    explicit BlockRun(const parameters::Run &prm)
+        : material(prm.material)
+        , damage(prm.material, material.mean_r())
+        , state(prm, MPI_COMM_WORLD)
+        , assembler(material, state.kinematics, state.reference_mapping, 1)
+        , update(material,
+                 state.kinematics,
+                 state.reference_mapping,
+                 1,
+                 &damage)
+    {
+      state.create_mesh();
+    }
+
+    const material::RigidViscoplastic material;
+    const material::DamageCriteria    damage;
+    state::State<3>                   state;
+    const solver::Assembler<3>        assembler;
+    const state::HistoryUpdate<3>     update;
+  };
+
   /// One step of tension along x with RD at @p theta (degrees) to x.
   inline Measured
   pull(parameters::Run prm, const double theta, const bool plane)
   {
     prm.material.anisotropy.rolling_direction = -theta;
-    const material::RigidViscoplastic material(prm.material);
-    const material::DamageCriteria    damage(prm.material, material.mean_r());
-    state::State<3>                   state(prm, MPI_COMM_WORLD);
-    const solver::Assembler<3>        assembler(material,
-                                         state.kinematics,
-                                         state.reference_mapping,
-                                         1);
-    const state::HistoryUpdate<3>     update(material,
-                                         state.kinematics,
-                                         state.reference_mapping,
-                                         1,
-                                         &damage);
-    state.create_mesh();
-    Tension tension(state, assembler, plane);
+    BlockRun    run(prm);
+    auto       &state    = run.state;
+    const auto &material = run.material;
+    const auto &update   = run.update;
+    Tension     tension(state, run.assembler, plane);
     tension.solve_flow();
     const double force = tension.end_force();
 

@@ -14,6 +14,7 @@
 #include <formsolve/newton/newton_solver.h>
 #include <formsolve/state/state.h>
 
+#include "block_tension.h"
 #include "check.h"
 #include "state_problem.h"
 
@@ -97,20 +98,10 @@ int main(int argc, char **argv)
   prm.tools.die.enabled             = false;
   prm.tools.blank_holder.enabled    = false;
 
-  const material::RigidViscoplastic material(prm.material);
-  const material::DamageCriteria    damage(prm.material);
-  state::State<3>                   state(prm, MPI_COMM_WORLD);
-  const solver::Assembler<3>        assembler(material,
-                                       state.kinematics,
-                                       state.reference_mapping,
-                                       1);
-  const state::HistoryUpdate<3>     update(material,
-                                       state.kinematics,
-                                       state.reference_mapping,
-                                       1,
-                                       &damage);
-  state.create_mesh();
-  Tension tension(state, assembler, update);
+  test::BlockRun run(prm);
+  auto          &state  = run.state;
+  const auto    &damage = run.damage;
+  Tension        tension(state, run.assembler, run.update);
 
   // The expected Cockcroft-Latham integral along the discrete strain path:
   // sigma_bar at the end-of-step strain times the step's strain increment.

@@ -110,21 +110,10 @@ namespace
   void check_flow_curve(const parameters::Run &prm)
   {
     using test::L, test::W, test::T, test::V, test::dt;
-    const material::RigidViscoplastic material(prm.material);
-    const material::DamageCriteria    damage(prm.material, material.mean_r());
-    state::State<3>                   state(prm, MPI_COMM_WORLD);
-    const solver::Assembler<3>        assembler(material,
-                                         state.kinematics,
-                                         state.reference_mapping,
-                                         1);
-    const state::HistoryUpdate<3>     update(material,
-                                         state.kinematics,
-                                         state.reference_mapping,
-                                         1,
-                                         &damage);
-    state.create_mesh();
-    test::Tension tension(state, assembler, false);
-    const auto    point = [&state]() {
+    test::BlockRun run(prm);
+    auto          &state = run.state;
+    test::Tension  tension(state, run.assembler, false);
+    const auto     point = [&state]() {
       return state.history.get_data(state.dof_handler.begin_active())[0];
     };
     double length = L, worst = 0, drift = 0;
@@ -138,7 +127,7 @@ namespace
           GridTools::volume(state.tria, *state.mapping) / length;
         const double stress = tension.end_force() / area;
         const double before = point()->strain;
-        state.advance(dt, update);
+        state.advance(dt, run.update);
         const double rate     = point()->strain_rate;
         const double expected = curve(prm.material, before + dt * rate) *
                                 rate_factor(prm.material, rate);
