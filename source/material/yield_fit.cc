@@ -116,7 +116,7 @@ namespace formsolve
         const std::vector<Datum> &data;
         std::vector<double>       c1, c2;
         double                    exponent;
-        double                    scale; // |x|^2 of the start
+        double                    scale       = 1; // |x|^2 of the start
         mutable unsigned int      evaluations = 0;
 
         int inputs() const { return 14; }
@@ -156,20 +156,18 @@ namespace formsolve
 
     YldFit fit_yld2004(const parameters::Anisotropy &p)
     {
-      const std::vector<Datum> data = data_of(p.fit);
-      Residual                 residual{data,
-                        p.yld_coefficients(1),
-                        p.yld_coefficients(2),
-                        p.yield_exponent};
-      Eigen::VectorXd          x(14);
+      const std::vector<Datum>  data = data_of(p.fit);
+      const std::vector<double> c1   = p.yld_coefficients(1),
+                                c2   = p.yld_coefficients(2);
+      Eigen::VectorXd x(14);
       for (unsigned int k = 0; k < 6; ++k)
         {
-          x[k]     = residual.c1[k];
-          x[7 + k] = residual.c2[k];
+          x[k]     = c1[k];
+          x[7 + k] = c2[k];
         }
-      x[6]           = residual.c1[8];
-      x[13]          = residual.c2[8];
-      residual.scale = x.squaredNorm();
+      x[6]  = c1[8];
+      x[13] = c2[8];
+      Residual residual{data, c1, c2, p.yield_exponent, x.squaredNorm()};
 
       // Levenberg-Marquardt finds the nearest minimum, and the sum of
       // squares has many: start also from fixed pseudo-random perturbations
