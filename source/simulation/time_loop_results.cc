@@ -162,17 +162,28 @@ namespace formsolve
 
     namespace
     {
-      /// The run summary's lines on the local solves of a non-quadratic
-      /// criterion (doc/theory.md, eq. 3e).
-      std::string local_solve_lines(const RunSummary &summary)
+      /// The run summary's lines on the yield criterion: its name and
+      /// directional values; for a non-quadratic one also the local solves
+      /// (doc/theory.md, eq. 3e) and the fit to test data (eq. 3g).
+      std::string criterion_lines(const parameters::Anisotropy      &a,
+                                  const material::RigidViscoplastic &law,
+                                  const RunSummary                  &summary)
       {
         std::ostringstream s;
-        s << "\nlocal_newton_solves = " << summary.local_solves
-          << "\nlocal_newton_mean_iterations = "
-          << summary.local_iterations / std::max(1., summary.local_solves)
-          << "\nlocal_newton_most_iterations = "
-          << summary.local_most_iterations
-          << "\nlocal_newton_over_6_iterations = " << summary.local_long_solves;
+        s << "\nyield_criterion = " << a.describe() << "\n"
+          << law.criterion_summary();
+        if (const auto *f = law.non_quadratic())
+          {
+            s << "\nlocal_newton_solves = " << summary.local_solves
+              << "\nlocal_newton_mean_iterations = "
+              << summary.local_iterations / std::max(1., summary.local_solves)
+              << "\nlocal_newton_most_iterations = "
+              << summary.local_most_iterations
+              << "\nlocal_newton_over_6_iterations = "
+              << summary.local_long_solves;
+            if (!f->fit_lines().empty())
+              s << "\n" << f->fit_lines();
+          }
         return s.str();
       }
     } // namespace
@@ -221,13 +232,7 @@ namespace formsolve
                                  180 / M_PI)
               : std::string())
         << "\nmax_thinning_percent = " << sh.max_thinning
-        << "\nyield_criterion = " << prm.material.anisotropy.describe() << "\n"
-        << material.criterion_summary()
-        << (material.non_quadratic() ? local_solve_lines(summary) : "")
-        << (material.non_quadratic() &&
-                !material.non_quadratic()->fit_lines().empty()
-              ? "\n" + material.non_quadratic()->fit_lines()
-              : "")
+        << criterion_lines(prm.material.anisotropy, material, summary)
         << "\nfracture_constants_conversion_k = " << damage.conversion()
         << "\noyane_a_used = " << damage.a_used()
         << "\noyane_b_used = " << damage.b_used() << "\nfracture_criterion = "
