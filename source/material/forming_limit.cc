@@ -1,4 +1,5 @@
 #include <formsolve/material/forming_limit.h>
+#include <formsolve/parameters/number_pairs.h>
 
 #include <algorithm>
 #include <cmath>
@@ -70,21 +71,7 @@ namespace formsolve
     double FormingLimit::major(const double minor) const
     {
       if (!table.empty())
-        {
-          if (minor <= table.front().first)
-            return table.front().second;
-          if (minor >= table.back().first)
-            return table.back().second;
-          const auto hi = std::upper_bound(table.begin(),
-                                           table.end(),
-                                           minor,
-                                           [](const double m, const auto &p) {
-                                             return m < p.first;
-                                           });
-          const auto lo = hi - 1;
-          return lo->second + (hi->second - lo->second) * (minor - lo->first) /
-                                (hi->first - lo->first);
-        }
+        return parameters::piecewise_linear(table, minor);
       const double flc0 = std::log1p(flc0_engineering);
       if (minor <= 0)
         return flc0 - minor; // constant thinning in true strains

@@ -46,19 +46,7 @@ namespace formsolve
 
     double ForceCurve::at(const double travel) const
     {
-      if (travel <= points.front().first)
-        return points.front().second;
-      if (travel >= points.back().first)
-        return points.back().second;
-      const auto  k = std::upper_bound(points.begin(),
-                                      points.end(),
-                                      travel,
-                                      [](const double x, const auto &p) {
-                                        return x < p.first;
-                                      });
-      const auto &a = *(k - 1), &b = *k;
-      return a.second +
-             (b.second - a.second) * (travel - a.first) / (b.first - a.first);
+      return piecewise_linear(points, travel);
     }
 
     double ForceCurve::smallest() const

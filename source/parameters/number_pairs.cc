@@ -1,6 +1,7 @@
 #include <formsolve/parameters/number_pairs.h>
 #include <formsolve/parameters/require.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -48,6 +49,25 @@ namespace formsolve
           points.emplace_back(a, b);
         }
       return points;
+    }
+
+    double
+    piecewise_linear(const std::vector<std::pair<double, double>> &points,
+                     const double                                  x)
+    {
+      if (x <= points.front().first)
+        return points.front().second;
+      if (x >= points.back().first)
+        return points.back().second;
+      const auto hi = std::upper_bound(points.begin(),
+                                       points.end(),
+                                       x,
+                                       [](const double v, const auto &p) {
+                                         return v < p.first;
+                                       });
+      const auto lo = hi - 1;
+      return lo->second + (hi->second - lo->second) * (x - lo->first) /
+                            (hi->first - lo->first);
     }
   } // namespace parameters
 } // namespace formsolve

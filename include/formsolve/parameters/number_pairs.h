@@ -16,5 +16,11 @@ namespace formsolve
     std::vector<std::pair<double, double>> read_pairs(const std::string &text,
                                                       const std::string &entry,
                                                       const std::string &form);
+
+    /// The table @p points (first values increasing) at @p x: linear in
+    /// between, the first and last values outside.
+    double
+    piecewise_linear(const std::vector<std::pair<double, double>> &points,
+                     const double                                  x);
   } // namespace parameters
 } // namespace formsolve
