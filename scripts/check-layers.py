@@ -17,6 +17,7 @@ LAYERS = [
     ["contact"],  # pairs, contact law, penalty strategies
     ["state"],  # what a step changes: State, quadrature history
     ["newton", "linear"],  # Newton on a NonlinearProblem; linear solves
+    ["beads"],  # equivalent draw beads: line forces on the sheet
     ["forming", "refinement"],  # the forming operators and step; adaptation
     ["postprocess"],  # measures, history.csv, VTU
     ["trimming"],  # the cut of the formed part

@@ -90,6 +90,8 @@ int main(int argc, char **argv)
             {
               // One additional tool shows the entries each of them has.
               parameters.tools.declare_additional(declarations, {"<name>"});
+              parameters.tools.draw_beads.declare_beads(declarations,
+                                                        {"<name>"});
               formsolve::parameters::write_manual(declarations.tree(),
                                                   std::cout);
             }

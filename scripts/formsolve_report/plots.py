@@ -49,6 +49,10 @@ def force_plot(run, split, path, plt):
                                ("force_punch", "punch", "tab:blue")):
         if key in h[0]:
             ax.plot(x, [v / 1000 for v in column(h, key)], label=label, color=colour)
+    # Draw beads (Tools/Draw beads): each one's restraining force, dashed.
+    for key in (k for k in h[0] if k.startswith("bead_") and k.endswith("_force")):
+        ax.plot(x, [v / 1000 for v in column(h, key)], ls="--",
+                label=f"draw bead {key[len('bead_'):-len('_force')]} (restraining)")
     peak, at, rising, _ = peak_force(run)
     ax.plot([at], [peak / 1000], "o", color="tab:blue", ms=6,
             label=f"peak punch force {peak / 1000:.1f} kN" + (": still rising" if rising else ""))

@@ -27,6 +27,7 @@ namespace formsolve
         , timer(timer)
         , body(assembler, prm.nonlinear)
         , contact(prm, state, strategy, timer)
+        , beads(prm, assembler.law(), state.kinematics)
         , factor_reuse(prm.linear.reuse_velocity_change)
     {}
 
@@ -71,6 +72,11 @@ namespace formsolve
     {
       dt = step_dt;
       body.begin_step();
+      if (beads.any())
+        {
+          TimerOutput::Scope t(timer, "draw beads");
+          beads.begin_step(state);
+        }
       point.matrix    = Iterate::Matrix::none;
       iterates        = 0;
       corrections     = 0;
@@ -141,11 +147,24 @@ namespace formsolve
       // now, before ranks with and without contact pairs start adding.
       residual.compress(VectorOperation::insert);
       contact.add(nullptr, &residual, dt, newton(point.kind));
+      if (beads.any())
+        {
+          TimerOutput::Scope t(timer, "draw beads");
+          beads.add(ghost,
+                    state.constraints,
+                    prm.contact.regularisation_velocity,
+                    newton(point.kind),
+                    nullptr,
+                    &residual);
+        }
       if (controlled())
         {
+          // The beads' opening force is taken from the holder's set force.
           std::vector<double> targets;
           for (const auto &f : state.force_controls)
-            targets.push_back(f.target);
+            targets.push_back(f.tool == state.tools.holder_index()
+                                ? std::max(f.target - beads.opening(), 0.)
+                                : f.target);
           forces.assemble(contact.pairs(),
                           contact.factors(),
                           state.tools,
@@ -210,6 +229,17 @@ namespace formsolve
     void FormingProblem<dim>::end_solve()
     {
       contact.converged(body_system());
+      if (beads.any())
+        {
+          auto records =
+            beads.rates(ghost, prm.contact.regularisation_velocity, state.comm);
+          for (unsigned int b = 0; b < records.size(); ++b)
+            {
+              records[b].work  = state.beads[b].work;
+              records[b].drawn = state.beads[b].drawn;
+            }
+          state.beads = records;
+        }
     }
 
     template <int dim>
@@ -279,6 +309,16 @@ namespace formsolve
       if (point.matrix == Iterate::Matrix::body)
         {
           contact.add(&matrix, nullptr, dt, newton(point.kind));
+          if (beads.any())
+            {
+              TimerOutput::Scope t(timer, "draw beads");
+              beads.add(ghost,
+                        state.constraints,
+                        prm.contact.regularisation_velocity,
+                        newton(point.kind),
+                        &matrix,
+                        nullptr);
+            }
           point.matrix = Iterate::Matrix::body_and_contact;
         }
       TimerOutput::Scope t(timer, "linear solve");

@@ -2,6 +2,7 @@
 
 #include <formsolve/parameters/additional_tool.h>
 #include <formsolve/parameters/declared.h>
+#include <formsolve/parameters/listed_names.h>
 #include <formsolve/parameters/require.h>
 
 #include <cmath>
@@ -117,26 +118,7 @@ namespace formsolve
       const std::string                                      &text,
       const std::vector<std::pair<std::string, std::string>> &overrides)
     {
-      dealii::ParameterHandler prm;
-      prm.enter_subsection("Tools");
-      prm.declare_entry("Additional tools", "", dealii::Patterns::Anything());
-      prm.leave_subsection();
-      try
-        {
-          prm.parse_input_from_string(text, "", /*skip_undefined=*/true);
-        }
-      catch (const dealii::ExceptionBase &)
-        {
-          return {};
-        }
-      std::string list;
-      prm.enter_subsection("Tools");
-      list = prm.get("Additional tools");
-      prm.leave_subsection();
-      for (const auto &[path, value] : overrides)
-        if (path == "Tools/Additional tools")
-          list = value;
-      return dealii::Utilities::split_string_list(list);
+      return listed_names(text, overrides, "Tools/Additional tools");
     }
   } // namespace parameters
 } // namespace formsolve

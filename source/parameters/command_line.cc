@@ -209,6 +209,8 @@ namespace formsolve
       // The additional tools' subsections exist once their names are known.
       tools.declare_additional(declarations,
                                additional_tool_names(text, cl.overrides));
+      tools.draw_beads.declare_beads(declarations,
+                                     draw_bead_names(text, cl.overrides));
       const DeclaredSection &tree = declarations.tree();
       check_input(tree, lines);
       try

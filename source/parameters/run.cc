@@ -173,6 +173,29 @@ namespace formsolve
       }
 
       /// The outlines of punch, die and holder must fit together.
+      /// Draw beads act between die and holder: a holder must close on
+      /// them.
+      void check_draw_beads(const Run &run)
+      {
+        const Tools &tools = run.tools;
+        for (const auto &bead : tools.draw_beads.beads)
+          {
+            const std::string e = "Tools/Draw beads/" + bead.name + "/";
+            require(tools.blank_holder.enabled && tools.die.enabled,
+                    e + "Line",
+                    "a draw bead acts between die and blank holder: enable "
+                    "both (Tools/Die/Enabled, Tools/Blank holder/Enabled)");
+            require(tools.holder_control != HolderControl::gap ||
+                      tools.blank_holder.gap < bead.height,
+                    e + "Height",
+                    "(" + str(bead.height) +
+                      " mm): the holder stays at Tools/Blank holder/Gap = " +
+                      str(tools.blank_holder.gap) +
+                      " mm above the sheet, so the bead would never "
+                      "penetrate it; the height must exceed the gap");
+          }
+      }
+
       void check_outlines(const Run &run)
       {
         const Tools &tools = run.tools;
@@ -261,6 +284,7 @@ namespace formsolve
       refinement.validate(mesh.layers);
       material.validate();
       tools.validate();
+      tools.draw_beads.validate(model::space_dimension(geometry.model) == 2);
       contact.validate();
       time.validate();
       nonlinear.validate();
@@ -301,6 +325,7 @@ namespace formsolve
               "'draw-through' needs an enabled die with an opening (Shape "
               "round or rounded rectangle)");
       check_outlines(*this);
+      check_draw_beads(*this);
       check_trimming(*this);
       check_springback(*this);
       check_memory(*this);

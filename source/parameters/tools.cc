@@ -50,6 +50,7 @@ namespace formsolve
         "solid and motion (see the subsection <name> below). Their history "
         "columns carry the name in lower case, spaces as underscores.",
         [](const std::string &) {});
+      draw_beads.declare(d);
       const Subsection tool(d, "Blank holder");
       blank_holder.declare(d);
       d.add("Control",

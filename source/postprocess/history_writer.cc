@@ -32,8 +32,9 @@ namespace formsolve
 
       /// history.csv: the process as the forming engineer reads it.
       template <int dim>
-      std::vector<std::string> columns(const tools::ToolSet<dim> &tools,
-                                       const model::Model         m)
+      std::vector<std::string> columns(const tools::ToolSet<dim>   &tools,
+                                       const parameters::DrawBeads &beads,
+                                       const model::Model           m)
       {
         std::vector<std::string> c = {"step",
                                       "time",
@@ -49,7 +50,14 @@ namespace formsolve
         // it exerts on the sheet along it (the set force under control).
         for (unsigned int t = tools.first_additional(); t < tools.size(); ++t)
           c.insert(c.end(),
-                   {"position_" + tools.key(t), "force_along_" + tools.key(t)});
+                   {"position_" + tools.key(t),
+                    "force_along_" + tools.key(t),
+                    "force_x_" + tools.key(t)});
+        // Draw beads: restraining and opening force, restraining work, and
+        // the material drawn across (section 6d of doc/theory.md).
+        for (const auto &b : beads.beads)
+          for (const char *what : {"_force", "_opening", "_work", "_drawn"})
+            c.push_back(b.key() + what);
         c.push_back("max_equivalent_strain");
         const auto where = model::coordinate_names(m);
         c.insert(c.end(),
@@ -120,7 +128,9 @@ namespace formsolve
     HistoryWriter<dim>::HistoryWriter(const state::State<dim> &state,
                                       const int                keep_rows)
         : table(state.prm.output.directory + "/history.csv",
-                columns(state.tools, state.prm.geometry.model),
+                columns(state.tools,
+                        state.prm.tools.draw_beads,
+                        state.prm.geometry.model),
                 Utilities::MPI::this_mpi_process(state.comm) == 0,
                 keep_rows)
         , solver_table(state.prm.output.directory + "/solver.csv",
@@ -186,6 +196,18 @@ namespace formsolve
           table.set("position_" + tools.key(t), tools[t].displacement() * d);
           table.set("force_along_" + tools.key(t),
                     -sym * (stats.tool_force[t] * d));
+          // Across the part: the modelled part's own (a mirrored half pulls
+          // the other way), what the sheet exerts on the tool.
+          table.set("force_x_" + tools.key(t), stats.tool_force[t][0]);
+        }
+      const auto &beads = state.prm.tools.draw_beads.beads;
+      for (unsigned int b = 0; b < beads.size(); ++b)
+        {
+          const auto &r = state.beads[b];
+          table.set(beads[b].key() + "_force", sym * r.force);
+          table.set(beads[b].key() + "_opening", sym * r.opening);
+          table.set(beads[b].key() + "_work", sym * r.work);
+          table.set(beads[b].key() + "_drawn", r.drawn);
         }
     }
 

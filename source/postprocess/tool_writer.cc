@@ -17,12 +17,51 @@ namespace formsolve
         : directory(directory)
     {}
 
+    namespace
+    {
+      /// Bead @p b of @p beads as patches standing on the die face across
+      /// the thickness @p t0: a quad per segment (3-D), a line (2-D).
+      template <int dim>
+      void add_bead(const parameters::DrawBead                    &bead,
+                    const double                                   value,
+                    const double                                   t0,
+                    std::vector<DataOutBase::Patch<dim - 1, dim>> &patches)
+      {
+        const auto  &line    = bead.line;
+        const double lift[2] = {0., t0};
+        for (std::size_t i = 0; i < (dim == 2 ? 1 : line.size() - 1) +
+                                      (dim == 3 && bead.closed ? 1 : 0);
+             ++i)
+          {
+            DataOutBase::Patch<dim - 1, dim> patch;
+            patch.reference_cell = ReferenceCells::get_hypercube<dim - 1>();
+            patch.n_subdivisions = 1;
+            patch.patch_index    = patches.size();
+            const unsigned int n = 1u << (dim - 1);
+            for (unsigned int v = 0; v < n; ++v)
+              {
+                const auto &p = line[dim == 2 ? 0 : (i + v % 2) % line.size()];
+                patch.vertices[v][0]       = p.first;
+                patch.vertices[v][dim - 1] = lift[dim == 2 ? v : v / 2];
+                if (dim == 3)
+                  patch.vertices[v][1] = p.second;
+              }
+            patch.data.reinit(1, n);
+            for (unsigned int v = 0; v < n; ++v)
+              patch.data(0, v) = value;
+            patches.push_back(patch);
+          }
+      }
+    } // namespace
+
     template <int dim>
-    void ToolWriter<dim>::write(const unsigned int          step,
-                                const double                time,
-                                const tools::ToolSet<dim>  &tools,
-                                const tools::SurfaceExtent &extent,
-                                const MPI_Comm              comm)
+    void ToolWriter<dim>::write(const unsigned int           step,
+                                const double                 time,
+                                const tools::ToolSet<dim>   &tools,
+                                const tools::SurfaceExtent  &extent,
+                                const parameters::DrawBeads &beads,
+                                const double                 t0,
+                                const MPI_Comm               comm)
     {
       if (Utilities::MPI::this_mpi_process(comm) != 0)
         return;
@@ -60,6 +99,8 @@ namespace formsolve
                 patches.push_back(patch);
               }
         }
+      for (std::size_t b = 0; b < beads.beads.size(); ++b)
+        add_bead<dim>(beads.beads[b], tools.size() + b, t0, patches);
       const std::string name =
         "tools_" + Utilities::int_to_string(step, 5) + ".vtu";
       DataOutBase::VtkFlags flags;

@@ -129,6 +129,13 @@ namespace formsolve
               all[key + ".active"]   = std::to_string(f.active);
               all[key + ".velocity"] = exact_text(f.velocity);
             }
+          // What the draw beads did so far (their rates are the next step's).
+          for (std::size_t b = 0; b < state.beads.size(); ++b)
+            {
+              const auto key      = "bead." + std::to_string(b);
+              all[key + ".work"]  = exact_text(state.beads[b].work);
+              all[key + ".drawn"] = exact_text(state.beads[b].drawn);
+            }
           all["holder.released"] = std::to_string(state.holder.released);
           all["holder.release_travel"] =
             exact_text(state.holder.release_travel);
@@ -272,6 +279,12 @@ namespace formsolve
           const auto key = "control." + std::to_string(f.tool);
           f.active       = meta.at(key + ".active") == "1";
           f.velocity     = std::stod(meta.at(key + ".velocity"));
+        }
+      for (std::size_t b = 0; b < state.beads.size(); ++b)
+        {
+          const auto key       = "bead." + std::to_string(b);
+          state.beads[b].work  = std::stod(meta.at(key + ".work"));
+          state.beads[b].drawn = std::stod(meta.at(key + ".drawn"));
         }
       state.holder.released       = meta.at("holder.released") == "1";
       state.holder.release_travel = std::stod(meta.at("holder.release_travel"));

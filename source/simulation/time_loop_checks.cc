@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <formsolve/beads/bead_operator.h>
 #include <formsolve/contact/contact_search.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/simulation/time_loop.h>
@@ -63,6 +64,13 @@ namespace formsolve
                     "lies under the blank holder (its opening is as "
                     "large as the blank or larger); it would not act "
                     "on the flange"));
+      if (prm.tools.draw_beads.any())
+        {
+          beads::BeadOperator<dim> beads(prm, material, state.kinematics);
+          beads.check_scene(state);
+          for (const auto &line : beads.describe())
+            pcout << "note: " << line << "\n";
+        }
       if (prm.springback.enabled)
         springback::check_supports(state); // before any work
       if (prm.trimming.any())

@@ -60,6 +60,8 @@ namespace formsolve
                            state.time,
                            state.tools,
                            tool_extent(),
+                           prm.tools.draw_beads,
+                           prm.geometry.thickness,
                            comm);
       last_output_step = state.step;
     }

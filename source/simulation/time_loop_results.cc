@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <formsolve/beads/bead_operator.h>
 #include <formsolve/model/dimensions.h>
 #include <formsolve/parameters/plausibility.h>
 #include <formsolve/postprocess/atomic_output.h>
@@ -261,7 +262,8 @@ namespace formsolve
       for (unsigned int z = 0; z < material::n_safety_zones; ++z)
         f << "\ncolumns_" << material::zone_key(material::SafetyZone(z))
           << " = " << sh.zone_count[z];
-      f << split_summary() << trimming_summary() << springback_summary();
+      f << split_summary() << trimming_summary() << springback_summary()
+        << bead_summary();
       if (!earing.angle.empty())
         {
           f << "\ncup_height_mean = " << earing.mean
@@ -288,6 +290,15 @@ namespace formsolve
       f << "\nend_reason = " << summary.end_reason << "\n";
       postprocess::write_atomically(prm.output.directory + "/run-summary.txt",
                                     [&](std::ostream &o) { o << f.str(); });
+    }
+
+    template <int dim>
+    std::string TimeLoop<dim>::bead_summary() const
+    {
+      if (!prm.tools.draw_beads.any())
+        return "";
+      return beads::BeadOperator<dim>(prm, material, state.kinematics)
+        .summary_lines(state.beads, prm.geometry.symmetry_factor());
     }
 
     template <int dim>
@@ -394,6 +405,7 @@ namespace formsolve
   template void        TimeLoop<dim>::measure_memory(RunSummary &) const;      \
   template void        TimeLoop<dim>::write_summary(const RunSummary &) const; \
   template std::string TimeLoop<dim>::split_summary() const;                   \
+  template std::string TimeLoop<dim>::bead_summary() const;                    \
   template std::vector<std::string> TimeLoop<dim>::run_warnings() const;       \
   template void                     TimeLoop<dim>::make_report() const;
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)

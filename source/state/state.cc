@@ -28,6 +28,7 @@ namespace formsolve
         , history_rule(run.mesh.degree + 1)
         , reference_mapping(run.mesh.degree)
         , tools(run.tools, run.contact, run.geometry.thickness)
+        , beads(run.tools.draw_beads.beads.size())
     {
       for (const unsigned int t : tools.force_controlled())
         force_controls.push_back({t});
@@ -124,6 +125,11 @@ namespace formsolve
       displacement_ghost = displacement;
       update_mapping();
       tools.advance(dt);
+      for (auto &b : beads)
+        {
+          b.work += b.power * dt;
+          b.drawn += b.drawn_rate * dt;
+        }
       time += dt;
       ++step;
     }

@@ -144,6 +144,24 @@ expect holder_curve_zero "Tools/Blank holder/Force: must be positive (N), got 0"
   --set "Tools/Blank holder/Enabled=true" --set "Tools/Blank holder/Force=0:1000, 10:0"
 expect flat_holder_force "Tools/Blank holder/Control" "$base" --set "Tools/Blank holder/Enabled=true" \
   --set "Tools/Blank holder/Shape=flat"
+# Draw beads (Tools/Draw beads) that cannot act, on the channel and the quarter cup.
+bead="$cases/channel-bead.prm"
+expect bead_negative_force "Tools/Draw beads/flange/Restraining force=-5\": \`-5\` is not accepted" "$bead" \
+  --set "Tools/Draw beads/flange/Restraining force=-5"
+expect bead_off_holder "Tools/Draw beads/flange/Line: the point (30) of the bead lies outside the face of Die" \
+  "$bead" --set "Tools/Draw beads/flange/Line=30"
+expect bead_off_blank "Tools/Draw beads/flange/Line: the point (200) of the bead lies outside the blank" \
+  "$bead" --set "Tools/Draw beads/flange/Line=200"
+expect bead_too_high "Tools/Draw beads/flange/Height: (9 mm) must stay below Bead radius + Shoulder radius" \
+  "$bead" --set "Tools/Draw beads/flange/Model=geometry" --set "Tools/Draw beads/flange/Height=9"
+expect bead_above_gap "Tools/Draw beads/flange/Height: (3 mm): the holder stays at Tools/Blank holder/Gap = 4 mm" \
+  "$bead" --set "Tools/Blank holder/Control=gap" --set "Tools/Blank holder/Gap=4"
+expect bead_without_holder "Tools/Draw beads/flange/Line: a draw bead acts between die and blank holder" \
+  "$bead" --set "Tools/Blank holder/Enabled=false"
+expect bead_line_in_section "Tools/Draw beads/flange/Line: takes one number" "$bead" \
+  --set "Tools/Draw beads/flange/Line=1:2, 3:4"
+expect bead_point_in_3d "Tools/Draw beads/ring/Line: takes two or more points" "$cases/cup-quarter-bead.prm" \
+  --set "Tools/Draw beads/ring/Line=34"
 expect minimum_above_step "Time stepping/Minimum time step" "$base" --set "Time stepping/Minimum time step=1"
 expect release_without_holder "Time stepping/End of run" "$base" --set "Time stepping/End of run=holder release"
 expect draw_through_flat_die "Time stepping/End of run" "$base" --set "Time stepping/End of run=draw-through"

@@ -64,7 +64,8 @@ namespace formsolve
       double cutoff_rate() const { return material.cutoff_rate(); }
       bool   smooth_rigid_zone() const { return material.smooth_rigid_zone(); }
 
-      const dealii::Quadrature<dim> &quadrature() const { return full; }
+      const dealii::Quadrature<dim>     &quadrature() const { return full; }
+      const material::RigidViscoplastic &law() const { return material; }
 
     private:
       const material::RigidViscoplastic &material;

@@ -3,11 +3,13 @@
 // the tools under force control, which border the system with each such
 // tool's velocity as one more unknown. At every evaluation data flows one
 // way: contact search -> body residual (and tangent) -> penalty factors ->
-// contact terms -> force equations; the linear solve takes the result.
+// contact and draw-bead terms -> force equations; the linear solve takes
+// the result.
 #pragma once
 
 #include <deal.II/base/timer.h>
 
+#include <formsolve/beads/bead_operator.h>
 #include <formsolve/contact/penalty_strategy.h>
 #include <formsolve/forming/assembler.h>
 #include <formsolve/forming/body_operator.h>
@@ -46,7 +48,8 @@ namespace formsolve
       /// is written into the state's.
       void begin_solve();
       /// The solve has converged: the strategy sees the body system of the
-      /// converged iterate (contact::PenaltyStrategy::converged).
+      /// converged iterate (contact::PenaltyStrategy::converged), and the
+      /// state's draw-bead records take its rates.
       void end_solve();
       /// The step's predictor @p v (the previous step's velocity, tools under
       /// force control at their last velocities), corrected at the contact
@@ -138,12 +141,13 @@ namespace formsolve
       /// step accepted before it).
       bool predictor() const { return iterates == 0; }
 
-      const parameters::Run &prm;
-      state::State<dim>     &state;
-      dealii::TimerOutput   &timer;
-      BodyOperator<dim>      body;
-      ContactOperator<dim>   contact;
-      ForceEquations<dim>    forces;
+      const parameters::Run   &prm;
+      state::State<dim>       &state;
+      dealii::TimerOutput     &timer;
+      BodyOperator<dim>        body;
+      ContactOperator<dim>     contact;
+      beads::BeadOperator<dim> beads;
+      ForceEquations<dim>      forces;
 
       /// The tangent of at most the point (Iterate::matrix says what).
       MatrixType matrix;

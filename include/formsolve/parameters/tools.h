@@ -3,6 +3,7 @@
 #pragma once
 
 #include <formsolve/parameters/additional_tool.h>
+#include <formsolve/parameters/draw_beads.h>
 #include <formsolve/parameters/force_curve.h>
 #include <formsolve/parameters/tool.h>
 
@@ -34,6 +35,7 @@ namespace formsolve
       bool          holder_force_by_siebel = false; // Force = siebel
 
       std::vector<AdditionalTool> additional;
+      DrawBeads                   draw_beads;
 
       /// Declares the entries, bound to these members.
       void declare(Declarations &d);

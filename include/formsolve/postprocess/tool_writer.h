@@ -2,6 +2,7 @@
 // every output step, so that ParaView shows the process.
 #pragma once
 
+#include <formsolve/parameters/draw_beads.h>
 #include <formsolve/tools/tool_set.h>
 #include <formsolve/tools/tool_surface.h>
 
@@ -23,12 +24,17 @@ namespace formsolve
 
       /// Rank 0 writes tools_<step>.vtu (cells with a field `tool`, the
       /// tool's index in history.csv's order) and rewrites tools.pvd.
-      /// Each tool is drawn over @p extent where it is unbounded.
-      void write(const unsigned int          step,
-                 const double                time,
-                 const tools::ToolSet<dim>  &tools,
-                 const tools::SurfaceExtent &extent,
-                 const MPI_Comm              comm);
+      /// Each tool is drawn over @p extent where it is unbounded; each draw
+      /// bead of @p beads as a band across the sheet's initial thickness
+      /// @p t0 along its line (a line in 2-D), `tool` = number of tools +
+      /// the bead's index.
+      void write(const unsigned int           step,
+                 const double                 time,
+                 const tools::ToolSet<dim>   &tools,
+                 const tools::SurfaceExtent  &extent,
+                 const parameters::DrawBeads &beads,
+                 const double                 t0,
+                 const MPI_Comm               comm);
 
       /// The (time, file) records of tools.pvd, for checkpoints.
       using Records = std::vector<std::pair<double, std::string>>;

@@ -235,6 +235,8 @@ namespace formsolve
       void write_summary(const RunSummary &summary) const;
       /// The split lines of run-summary.txt.
       std::string split_summary() const;
+      /// The draw beads' lines of run-summary.txt.
+      std::string bead_summary() const;
       /// Warnings of the run itself (tools that never touched the sheet).
       std::vector<std::string> run_warnings() const;
       /// Thickness, strains, zones, draw-in and damage maxima of the state.

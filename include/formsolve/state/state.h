@@ -41,6 +41,18 @@ namespace formsolve
     };
 
     /// The blank holder lets go of the blank when its flange has left it.
+    /// A draw bead in the last converged step (modelled part), and what it
+    /// did since the start.
+    struct BeadRecord
+    {
+      double force      = 0; // N, restraining, summed along the line
+      double opening    = 0; // N, taken from the holder's force
+      double power      = 0; // N mm/s, restraining work rate
+      double drawn_rate = 0; // mm/s, mean speed of material across it
+      double work       = 0; // N mm since the start
+      double drawn      = 0; // mm of material drawn across since the start
+    };
+
     struct HolderState
     {
       bool   released       = false;
@@ -153,6 +165,7 @@ namespace formsolve
       contact::ContactState contact_state;
       std::vector<ForceControl> force_controls;
       HolderState               holder;
+      std::vector<BeadRecord>   beads; // Tools/Draw beads, in order
 
       double       time = 0;
       unsigned int step = 0;
