@@ -147,16 +147,7 @@ namespace formsolve
       // now, before ranks with and without contact pairs start adding.
       residual.compress(VectorOperation::insert);
       contact.add(nullptr, &residual, dt, newton(point.kind));
-      if (beads.any())
-        {
-          TimerOutput::Scope t(timer, "draw beads");
-          beads.add(ghost,
-                    state.constraints,
-                    prm.contact.regularisation_velocity,
-                    newton(point.kind),
-                    nullptr,
-                    &residual);
-        }
+      add_beads(nullptr, &residual);
       if (controlled())
         {
           // The beads' opening force is taken from the holder's set force.
@@ -174,6 +165,20 @@ namespace formsolve
                           state.constraints,
                           targets);
         }
+    }
+
+    template <int dim>
+    void FormingProblem<dim>::add_beads(MatrixType *K, VectorType *r)
+    {
+      if (!beads.any())
+        return;
+      TimerOutput::Scope t(timer, "draw beads");
+      beads.add(ghost,
+                state.constraints,
+                prm.contact.regularisation_velocity,
+                newton(point.kind),
+                K,
+                r);
     }
 
     template <int dim>
@@ -309,16 +314,7 @@ namespace formsolve
       if (point.matrix == Iterate::Matrix::body)
         {
           contact.add(&matrix, nullptr, dt, newton(point.kind));
-          if (beads.any())
-            {
-              TimerOutput::Scope t(timer, "draw beads");
-              beads.add(ghost,
-                        state.constraints,
-                        prm.contact.regularisation_velocity,
-                        newton(point.kind),
-                        &matrix,
-                        nullptr);
-            }
+          add_beads(&matrix, nullptr);
           point.matrix = Iterate::Matrix::body_and_contact;
         }
       TimerOutput::Scope t(timer, "linear solve");

@@ -178,6 +178,8 @@ namespace formsolve
       for (std::size_t i = 0; i < names.size(); ++i)
         {
           beads[i].name = names[i];
+          if (names[i].find('/') != std::string::npos)
+            continue; // refused by validate()
           const Subsection bead(d, names[i]);
           beads[i].declare(d);
         }
@@ -187,6 +189,9 @@ namespace formsolve
     {
       for (std::size_t i = 0; i < beads.size(); ++i)
         {
+          require(beads[i].name.find('/') == std::string::npos,
+                  "Tools/Draw beads/Names",
+                  "`" + beads[i].name + "` cannot name a bead (no '/')");
           for (std::size_t j = 0; j < i; ++j)
             require(beads[i].key() != beads[j].key(),
                     "Tools/Draw beads/Names",

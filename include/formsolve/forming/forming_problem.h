@@ -115,6 +115,8 @@ namespace formsolve
       /// r = r_b + contact forces with the pairs' factors, and the force
       /// equations.
       void add_contact_forces();
+      /// The draw beads' terms at the point into @p K and/or @p r.
+      void add_beads(MatrixType *K, VectorType *r);
       /// The point's tangent, if it was left for later.
       void complete_tangent();
       /// The point's body system (r_b, K_b), its tangent assembled when a
