@@ -50,8 +50,9 @@ def force_plot(run, split, path, plt):
         if key in h[0]:
             ax.plot(x, [v / 1000 for v in column(h, key)], label=label, color=colour)
     # Draw beads (Tools/Draw beads): each one's restraining force, dashed.
-    for key in (k for k in h[0] if k.startswith("bead_") and k.endswith("_force")):
-        ax.plot(x, [v / 1000 for v in column(h, key)], ls="--",
+    beads = [k for k in h[0] if k.startswith("bead_") and k.endswith("_force")]
+    for key, colour in zip(beads, ("tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan") * 8):
+        ax.plot(x, [v / 1000 for v in column(h, key)], ls="--", color=colour,
                 label=f"draw bead {key[len('bead_'):-len('_force')]} (restraining)")
     peak, at, rising, _ = peak_force(run)
     ax.plot([at], [peak / 1000], "o", color="tab:blue", ms=6,
