@@ -23,12 +23,8 @@ namespace formsolve
       {
         if (t.find(':') != std::string::npos)
           return read_pairs(t, e, "x:y");
-        char        *end = nullptr;
-        const double x   = std::strtod(t.c_str(), &end);
-        require(end != t.c_str() &&
-                  std::string(end).find_first_not_of(" \t") ==
-                    std::string::npos &&
-                  std::isfinite(x),
+        double x = 0;
+        require(read_number(t, x),
                 e,
                 "`" + t +
                   "` is not accepted; it takes points 'x:y, x:y, ...' (mm) "

@@ -16,12 +16,8 @@ namespace formsolve
     {
       if (text.find(':') == std::string::npos)
         {
-          char        *end = nullptr;
-          const double f   = std::strtod(text.c_str(), &end);
-          require(end != text.c_str() &&
-                    std::string(end).find_first_not_of(" \t") ==
-                      std::string::npos &&
-                    std::isfinite(f),
+          double f = 0;
+          require(read_number(text, f),
                   entry,
                   "`" + text +
                     "` is not accepted; it takes a force in N, or a table "

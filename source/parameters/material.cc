@@ -47,12 +47,8 @@ namespace formsolve
       {
         if (text.find_first_not_of(" \t") == std::string::npos)
           return std::numeric_limits<double>::quiet_NaN();
-        char        *end = nullptr;
-        const double x   = std::strtod(text.c_str(), &end);
-        require(end != text.c_str() &&
-                  std::string(end).find_first_not_of(" \t") ==
-                    std::string::npos &&
-                  std::isfinite(x),
+        double x = 0;
+        require(read_number(text, x),
                 entry,
                 "'" + text + "' is not a number (leave it empty if not given)");
         return x;

@@ -10,6 +10,15 @@ namespace formsolve
 {
   namespace parameters
   {
+    bool read_number(const std::string &text, double &x)
+    {
+      char *end = nullptr;
+      x         = std::strtod(text.c_str(), &end);
+      return end != text.c_str() &&
+             std::string(end).find_first_not_of(" \t") == std::string::npos &&
+             std::isfinite(x);
+    }
+
     std::vector<std::pair<double, double>> read_pairs(const std::string &text,
                                                       const std::string &entry,
                                                       const std::string &form)
@@ -23,23 +32,9 @@ namespace formsolve
             continue;
           const auto colon = item.find(':');
           double     a = 0, b = 0;
-          bool       ok = colon != std::string::npos;
-          if (ok)
-            {
-              const std::string x = item.substr(0, colon),
-                                y = item.substr(colon + 1);
-              char *end           = nullptr;
-              a                   = std::strtod(x.c_str(), &end);
-              ok                  = end != x.c_str() &&
-                   std::string(end).find_first_not_of(" \t") ==
-                     std::string::npos &&
-                   std::isfinite(a);
-              b  = std::strtod(y.c_str(), &end);
-              ok = ok && end != y.c_str() &&
-                   std::string(end).find_first_not_of(" \t") ==
-                     std::string::npos &&
-                   std::isfinite(b);
-            }
+          const bool ok = colon != std::string::npos &&
+                          read_number(item.substr(0, colon), a) &&
+                          read_number(item.substr(colon + 1), b);
           const auto first = item.find_first_not_of(" \t");
           const auto last  = item.find_last_not_of(" \t");
           require(ok,

@@ -10,6 +10,10 @@ namespace formsolve
 {
   namespace parameters
   {
+    /// Whether @p text is one finite number (blanks around it allowed),
+    /// then in @p x.
+    bool read_number(const std::string &text, double &x);
+
     /// The pairs of @p text (empty items skipped); an item that is not two
     /// finite numbers around a colon throws naming @p entry and @p form
     /// ("minor:major").
