@@ -21,6 +21,8 @@ namespace formsolve
       std::vector<std::pair<double, double>> read_line(const std::string &t,
                                                        const std::string &e)
       {
+        if (t.find_first_not_of(" \t") == std::string::npos)
+          return {}; // not given: validate() says so
         if (t.find(':') != std::string::npos)
           return read_pairs(t, e, "x:y");
         double x = 0;
@@ -105,6 +107,10 @@ namespace formsolve
     void DrawBead::validate(const bool section) const
     {
       const std::string e = "Tools/Draw beads/" + name + "/";
+      require(!line.empty(),
+              e + "Line",
+              "must be given: where the bead lies (each bead named in "
+              "Tools/Draw beads/Names needs its subsection with a Line)");
       require(section ? line.size() == 1 : line.size() >= 2,
               e + "Line",
               section ? "takes one number, the bead's x (mm), in a 2-D model"

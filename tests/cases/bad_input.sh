@@ -158,6 +158,8 @@ expect bead_above_gap "Tools/Draw beads/flange/Height: (3 mm): the holder stays 
   "$bead" --set "Tools/Blank holder/Control=gap" --set "Tools/Blank holder/Gap=4"
 expect bead_without_holder "Tools/Draw beads/flange/Line: a draw bead acts between die and blank holder" \
   "$bead" --set "Tools/Blank holder/Enabled=false"
+expect bead_without_line "Tools/Draw beads/other/Line: must be given" "$bead" \
+  --set "Tools/Draw beads/Names=flange, other"
 expect bead_line_in_section "Tools/Draw beads/flange/Line: takes one number" "$bead" \
   --set "Tools/Draw beads/flange/Line=1:2, 3:4"
 expect bead_point_in_3d "Tools/Draw beads/ring/Line: takes two or more points" "$cases/cup-quarter-bead.prm" \

@@ -7,6 +7,7 @@
 // measured 100x slower on the vector round trip).
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/physics/notation.h>
+#include <deal.II/physics/transformations.h>
 
 #include <formsolve/material/mandel.h>
 
@@ -52,20 +53,10 @@ int main()
                        kelvin::to_tensor<SymmetricTensor<4, 3>>(kc))
                         .norm());
       // A rotation about an axis in general position.
-      const double angle = 3 * u(rng);
       Tensor<1, 3> n({u(rng), u(rng), 1.});
       n /= n.norm();
-      Tensor<2, 3> R;
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          R[i][j] = (i == j ? std::cos(angle) : 0.) +
-                    (1 - std::cos(angle)) * n[i] * n[j];
-      R[0][1] -= std::sin(angle) * n[2];
-      R[1][0] += std::sin(angle) * n[2];
-      R[0][2] += std::sin(angle) * n[1];
-      R[2][0] -= std::sin(angle) * n[1];
-      R[1][2] -= std::sin(angle) * n[0];
-      R[2][1] += std::sin(angle) * n[0];
+      const Tensor<2, 3> R =
+        Physics::Transformations::Rotations::rotation_matrix_3d(n, 3 * u(rng));
       const auto T  = formsolve::material::mandel_rotation(R);
       const auto Ta = formsolve::material::multiply(T, va);
       const auto kr =

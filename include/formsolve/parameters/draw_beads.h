@@ -27,7 +27,7 @@ namespace formsolve
       std::string name;
       /// Plan-view points (x, y) in mm; in 2-D one point (x, 0).
       std::vector<std::pair<double, double>> line;
-      std::string                            line_text = "50";
+      std::string                            line_text = ""; // no default place
       bool                                   closed    = false;
       BeadModel                              model     = BeadModel::forces;
       /// N/mm at the line's start [and end, linear along the line].
