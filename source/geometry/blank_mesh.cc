@@ -192,9 +192,9 @@ namespace formsolve
         double min_chord;
       };
 
-      void create_coarse(const parameters::Geometry              &g,
-                         const parameters::Mesh                  &m,
-                         parallel::distributed::Triangulation<3> &tria)
+      void create_coarse(const parameters::Geometry &g,
+                         const parameters::Mesh     &m,
+                         Triangulation<3>           &tria)
       {
         const unsigned int k = initial_mesh_level(m);
         Triangulation<2>   planform;
@@ -218,21 +218,11 @@ namespace formsolve
           for (const auto &face : cell->face_iterators())
             if (face->at_boundary())
               {
-                const Point<3>     c  = face->center();
-                types::boundary_id id = free_surface;
-                if (std::abs(c[2]) > tol && std::abs(c[2] - g.thickness) > tol)
-                  {
-                    if (model::symmetric_in_x(g.model) && std::abs(c[0]) < tol)
-                      id = symmetry_x;
-                    else if (model::symmetric_in_y(g.model) &&
-                             (std::abs(c[1]) < tol ||
-                              (g.model == Model::slice &&
-                               std::abs(c[1] - g.blank_width) < tol)))
-                      id = symmetry_y;
-                    else if (rim)
-                      face->set_all_manifold_ids(rim_manifold);
-                  }
-                face->set_boundary_id(id);
+                const Point<3> c = face->center();
+                face->set_boundary_id(boundary_id(g, c));
+                if (rim && face->boundary_id() == free_surface &&
+                    std::abs(c[2]) > tol && std::abs(c[2] - g.thickness) > tol)
+                  face->set_all_manifold_ids(rim_manifold);
               }
         tria.copy_triangulation(serial);
         // The p4est refinements put the rim's new vertices on the circle, as
@@ -264,9 +254,9 @@ namespace formsolve
           }
       }
 
-      void create_coarse(const parameters::Geometry              &g,
-                         const parameters::Mesh                  &m,
-                         parallel::distributed::Triangulation<2> &tria)
+      void create_coarse(const parameters::Geometry &g,
+                         const parameters::Mesh     &m,
+                         Triangulation<2>           &tria)
       {
         Assert(model::space_dimension(g.model) == 2, ExcInternalError());
         const bool         axi = g.model == Model::axisymmetric;
@@ -280,16 +270,40 @@ namespace formsolve
                                                    m.layers >> k},
                                                   Point<2>(0, 0),
                                                   Point<2>(R, g.thickness));
-        const double tol = 1e-6 * g.thickness;
-        for (const auto &cell : serial.active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary())
-              face->set_boundary_id(face->center()[0] >= tol ? free_surface
-                                    : axi                    ? axis
-                                                             : symmetry_x);
+        set_boundary_ids(g, serial);
         tria.copy_triangulation(serial);
       }
     } // namespace
+
+    template <int dim>
+    types::boundary_id boundary_id(const parameters::Geometry &g,
+                                   const Point<dim>           &c)
+    {
+      const double tol = 1e-6 * g.thickness;
+      if constexpr (dim == 2)
+        return c[0] >= tol                      ? free_surface
+               : g.model == Model::axisymmetric ? axis
+                                                : symmetry_x;
+      if (std::abs(c[dim - 1]) <= tol ||
+          std::abs(c[dim - 1] - g.thickness) <= tol)
+        return free_surface;
+      if (model::symmetric_in_x(g.model) && std::abs(c[0]) < tol)
+        return symmetry_x;
+      if (model::symmetric_in_y(g.model) &&
+          (std::abs(c[1]) < tol ||
+           (g.model == Model::slice && std::abs(c[1] - g.blank_width) < tol)))
+        return symmetry_y;
+      return free_surface;
+    }
+
+    template <int dim>
+    void set_boundary_ids(const parameters::Geometry &g, Triangulation<dim> &t)
+    {
+      for (const auto &cell : t.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            face->set_boundary_id(boundary_id(g, face->center()));
+    }
 
     unsigned int initial_mesh_level(const parameters::Mesh &m)
     {
@@ -300,10 +314,9 @@ namespace formsolve
     }
 
     template <int dim>
-    void
-    create_coarse_blank_mesh(const parameters::Geometry                &g,
-                             const parameters::Mesh                    &m,
-                             parallel::distributed::Triangulation<dim> &tria)
+    void create_coarse_blank_mesh(const parameters::Geometry &g,
+                                  const parameters::Mesh     &m,
+                                  Triangulation<dim>         &tria)
     {
       AssertThrow(model::space_dimension(g.model) == dim, ExcInternalError());
       create_coarse(g, m, tria);
@@ -318,15 +331,18 @@ namespace formsolve
       tria.refine_global(initial_mesh_level(m));
     }
 
-#define INSTANTIATE(dim)                          \
-  template void create_blank_mesh<dim>(           \
-    const parameters::Geometry &,                 \
-    const parameters::Mesh &,                     \
-    parallel::distributed::Triangulation<dim> &); \
-  template void create_coarse_blank_mesh<dim>(    \
-    const parameters::Geometry &,                 \
-    const parameters::Mesh &,                     \
-    parallel::distributed::Triangulation<dim> &);
+#define INSTANTIATE(dim)                                                     \
+  template void create_blank_mesh<dim>(                                      \
+    const parameters::Geometry &,                                            \
+    const parameters::Mesh &,                                                \
+    parallel::distributed::Triangulation<dim> &);                            \
+  template void create_coarse_blank_mesh<dim>(const parameters::Geometry &,  \
+                                              const parameters::Mesh &,      \
+                                              Triangulation<dim> &);         \
+  template types::boundary_id boundary_id(const parameters::Geometry &,      \
+                                          const Point<dim> &);               \
+  template void               set_boundary_ids(const parameters::Geometry &, \
+                                               Triangulation<dim> &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace geometry

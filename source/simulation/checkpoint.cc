@@ -63,9 +63,10 @@ namespace formsolve
     {}
 
     template <int dim>
-    void Checkpoint<dim>::save(const State<dim> &state,
-                               const Metadata   &meta,
-                               const VectorType *sprung) const
+    void Checkpoint<dim>::save(const State<dim>        &state,
+                               const Metadata          &meta,
+                               const VectorType        *sprung,
+                               const std::vector<bool> *kept) const
     {
       const bool root = Utilities::MPI::this_mpi_process(state.comm) == 0;
       const std::string fresh = directory + "/checkpoint.new",
@@ -101,6 +102,12 @@ namespace formsolve
               auto &h = history[cell->active_cell_index()];
               h.insert(h.end(), packed.begin(), packed.end());
             }
+      // A trimmed part: each cell's side of the cut after its history.
+      if (kept)
+        for (const auto &cell : state.tria.active_cell_iterators())
+          if (cell->is_locally_owned())
+            history[cell->active_cell_index()].push_back(
+              (*kept)[cell->active_cell_index()] ? 1 : 0);
       parallel::distributed::CellDataTransfer<dim, dim, CellValues> cells(
         state.tria,
         /*variable size*/ true);
@@ -116,6 +123,7 @@ namespace formsolve
           all["coarse_cells"] = std::to_string(state.tria.n_cells(0));
           all["fields"]       = std::to_string(values.size());
           all["sprung"]       = sprung ? "1" : "0";
+          all["trimmed"]      = kept ? "1" : "0";
           for (unsigned int t = 0; t < state.tools.size(); ++t)
             {
               const auto key         = "tool." + std::to_string(t);
@@ -195,7 +203,8 @@ namespace formsolve
     std::vector<VectorType> load_part(const std::string &from,
                                       const Metadata    &meta,
                                       State<dim>        &state,
-                                      const std::string &who)
+                                      const std::string &who,
+                                      std::vector<bool> *kept)
     {
       geometry::create_coarse_blank_mesh(state.prm.geometry,
                                          state.prm.mesh,
@@ -221,13 +230,18 @@ namespace formsolve
         state.tria,
         true);
       cells.deserialize(history);
+      const bool trimmed = meta.count("trimmed") && meta.at("trimmed") == "1";
+      if (kept)
+        kept->assign(state.tria.n_active_cells(), true);
       for (const auto &cell : state.tria.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             const auto &h = history[cell->active_cell_index()];
             auto        q = state.history.get_data(cell);
             const auto  n = q[0]->number_of_values();
-            AssertThrow(h.size() == n * q.size(),
+            if (kept && trimmed && !h.empty())
+              (*kept)[cell->active_cell_index()] = h.back() > 0.5;
+            AssertThrow(h.size() == n * q.size() + (trimmed ? 1 : 0),
                         ExcMessage(who + ": the checkpoint in " + from +
                                    " does not fit this program's history "
                                    "data"));
@@ -297,7 +311,8 @@ namespace formsolve
   template std::vector<VectorType> load_part(const std::string &, \
                                              const Metadata &,    \
                                              State<dim> &,        \
-                                             const std::string &);
+                                             const std::string &, \
+                                             std::vector<bool> *);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace simulation

@@ -1,11 +1,14 @@
 #include <formsolve/model/dimensions.h>
 #include <formsolve/simulation/parameter_listing.h>
 #include <formsolve/simulation/start_from.h>
+#include <formsolve/state/sheet_integrals.h>
+#include <formsolve/trimming/part_transfer.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 namespace formsolve
 {
@@ -82,13 +85,6 @@ namespace formsolve
                     ExcMessage(entry + ": " + r.checkpoint +
                                "/meta.txt is incomplete (no '" + key +
                                "'); run the earlier case again"));
-      AssertThrow(value(meta, "trimmed") != "1",
-                  ExcMessage(
-                    entry + ": the run in '" + folder +
-                    "' trimmed its part (Trimming); a next operation on a "
-                    "trimmed part is not available yet (the mesh would "
-                    "have to be rebuilt without the cells cut away): start "
-                    "from a run without Trimming"));
       const std::string diff = differences(read_parameters(r.checkpoint),
                                            listing,
                                            "the earlier run",
@@ -109,7 +105,13 @@ namespace formsolve
       r.steps      = std::stoul(value(meta, "step"));
       r.travel     = std::stod(value(meta, "punch_travel"));
       r.sprung     = value(meta, "sprung") == "1";
+      r.trimmed    = value(meta, "trimmed") == "1";
       const auto s = summary(folder);
+      if (r.trimmed)
+        {
+          r.earlier_volume = std::stod(value(s, "trimming_volume"));
+          r.earlier_strain = std::stod(value(s, "trimming_strain_integral"));
+        }
       r.end_reason = value(s, "end_reason");
       if (value(s, "split") == "yes")
         r.split = "at punch travel " + value(s, "split_travel") + " mm, at " +
@@ -120,27 +122,72 @@ namespace formsolve
 
     std::string summary_lines(const EarlierRun *earlier)
     {
-      return "\nstart_from = " + (earlier ? earlier->folder : "") +
-             "\nstart_from_shape = " +
-             (!earlier          ? ""
-              : earlier->sprung ? "sprung"
-                                : "as formed");
+      std::ostringstream s;
+      s.precision(10);
+      s << "\nstart_from = " << (earlier ? earlier->folder : "")
+        << "\nstart_from_shape = "
+        << (!earlier          ? ""
+            : earlier->sprung ? "sprung"
+                              : "as formed")
+        << "\nstart_from_trimmed = "
+        << (!earlier           ? ""
+            : earlier->trimmed ? "yes"
+                               : "no");
+      if (!earlier)
+        return s.str();
+      s << "\nstart_from_volume = " << earlier->volume
+        << "\nstart_from_earlier_volume = " << earlier->earlier_volume
+        << "\nstart_from_strain_integral = " << earlier->strain
+        << "\nstart_from_earlier_strain_integral = " << earlier->earlier_strain;
+      if (earlier->trimmed)
+        {
+          const auto &m = earlier->part_mesh;
+          s << "\nstart_from_mesh_level = " << m.level
+            << "\nstart_from_coarse_cells = " << m.kept
+            << "\nstart_from_coarse_cells_left_out = " << m.left_out
+            << "\nstart_from_largest_move = " << m.largest_move
+            << "\nstart_from_worst_corner_ratio = " << m.worst_corner_ratio;
+        }
+      return s.str();
     }
 
     template <int dim>
-    void load_earlier_part(const EarlierRun &earlier, State<dim> &state)
+    void load_earlier_part(EarlierRun                      &earlier,
+                           State<dim>                      &state,
+                           const state::HistoryUpdate<dim> &update)
     {
-      const Metadata meta   = read_metadata(earlier.checkpoint);
-      const auto     fields = load_part(earlier.checkpoint,
-                                    meta,
-                                    state,
-                                    entry + " = " + earlier.folder);
-      state.set_shape(earlier.sprung ? fields.back() : fields[1]);
-      state.update_contact_areas();
+      const Metadata meta = read_metadata(earlier.checkpoint);
+      const auto     who  = entry + " = " + earlier.folder;
+      if (!earlier.trimmed)
+        {
+          const auto fields = load_part(earlier.checkpoint, meta, state, who);
+          state.set_shape(earlier.sprung ? fields.back() : fields[1]);
+          state.update_contact_areas();
+          earlier.volume = earlier.earlier_volume = state::volume(state);
+          earlier.strain                          = earlier.earlier_strain =
+            state::integral(state, &state::QuadraturePointHistory::strain);
+          return;
+        }
+      // The earlier mesh with its cut-away cells, then the part alone.
+      State<dim>        all(state.prm, state.comm);
+      std::vector<bool> kept;
+      const auto fields = load_part(earlier.checkpoint, meta, all, who, &kept);
+      earlier.part_mesh = trimming::create_part_mesh(all, kept, state.tria);
+      trimming::refine_like(all, earlier.part_mesh.level, state);
+      trimming::transfer_part(all,
+                              fields[1],
+                              earlier.sprung ? fields.back() : fields[1],
+                              update,
+                              state);
+      earlier.volume = state::volume(state);
+      earlier.strain =
+        state::integral(state, &state::QuadraturePointHistory::strain);
     }
 
-#define INSTANTIATE(dim) \
-  template void load_earlier_part(const EarlierRun &, State<dim> &);
+#define INSTANTIATE(dim)                        \
+  template void load_earlier_part(EarlierRun &, \
+                                  State<dim> &, \
+                                  const state::HistoryUpdate<dim> &);
     FORMSOLVE_FOR_EACH_DIM(INSTANTIATE)
 #undef INSTANTIATE
   } // namespace simulation

@@ -191,6 +191,19 @@ namespace formsolve
               << earlier->steps << " steps to punch travel " << earlier->travel
               << " mm: " << earlier->end_reason
               << "); tools and time start afresh" << std::endl;
+      if (earlier && earlier->trimmed)
+        {
+          const auto &m = earlier->part_mesh;
+          pcout << "trimmed part: on a mesh of its own, " << m.kept
+                << " cells of the earlier mesh's level " << m.level
+                << " without " << m.left_out
+                << " cut away, the nodes next to the cut moved onto it by up "
+                   "to "
+                << m.largest_move << " mm, refined as the earlier mesh; volume "
+                << earlier->volume
+                << " mm^3 (the trimmed part's: " << earlier->earlier_volume
+                << ")" << std::endl;
+        }
       if (earlier && !earlier->split.empty())
         pcout << "warning: that part split in its run (" << earlier->split
               << "); this run forms a split part" << std::endl;

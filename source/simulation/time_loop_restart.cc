@@ -164,7 +164,7 @@ namespace formsolve
             find_earlier_run(prm.geometry.start_from,
                              prm.output.directory,
                              parameter_listing()));
-          load_earlier_part(*earlier, state);
+          load_earlier_part(*earlier, state, history_update);
         }
       for (const auto &line : place_tools_against_part(state))
         pcout << line << std::endl;
@@ -178,10 +178,13 @@ namespace formsolve
       summary.wall_time    = seconds();
       auto meta            = loop_metadata(summary);
       meta["punch_travel"] = exact_text(state.tools.punch_travel());
-      // A next operation starts only from a finished, untrimmed part.
+      // A next operation starts only from a finished part; a trimmed one
+      // carries which cells it kept.
       meta["finished"] = end && !summary.solver_failed ? "1" : "0";
-      meta["trimmed"]  = kept ? "1" : "0";
-      checkpoint->save(state, meta, end ? sprung_shape.get() : nullptr);
+      checkpoint->save(state,
+                       meta,
+                       end ? sprung_shape.get() : nullptr,
+                       end ? kept.get() : nullptr);
       last_checkpoint = seconds();
     }
 

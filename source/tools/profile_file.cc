@@ -14,11 +14,14 @@ namespace formsolve
   {
     using namespace dealii;
 
-    ProfileLines read_profile_csv(const std::string &file)
+    ProfileLines read_profile_csv(const std::string &file,
+                                  const std::string &what,
+                                  const std::string &names,
+                                  const bool         on_axis_side)
     {
       std::ifstream in(file);
       AssertThrow(in.good(),
-                  ExcMessage("tool profile file '" + file +
+                  ExcMessage(what + " '" + file +
                              "': no such file "
                              "or not readable"));
       ProfileLines p;
@@ -41,12 +44,12 @@ namespace formsolve
               !std::isdigit(static_cast<unsigned char>(first.back())))
             continue;
           AssertThrow(ok,
-                      ExcMessage("tool profile file '" + file + "', line " +
+                      ExcMessage(what + " '" + file + "', line " +
                                  std::to_string(number) +
-                                 ": expected two numbers r, z (mm), got `" +
-                                 line + "`"));
-          AssertThrow(r >= 0,
-                      ExcMessage("tool profile file '" + file + "', line " +
+                                 ": expected two numbers " + names +
+                                 " (mm), got `" + line + "`"));
+          AssertThrow(r >= 0 || !on_axis_side,
+                      ExcMessage(what + " '" + file + "', line " +
                                  std::to_string(number) +
                                  ": r must not be negative (the axis is r = "
                                  "0)"));
@@ -57,8 +60,8 @@ namespace formsolve
           p.points.emplace_back(r, z);
         }
       AssertThrow(p.points.size() >= 2,
-                  ExcMessage("tool profile file '" + file +
-                             "': fewer than two points r, z"));
+                  ExcMessage(what + " '" + file + "': fewer than two points " +
+                             names));
       return p;
     }
 

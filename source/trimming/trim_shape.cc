@@ -64,7 +64,10 @@ namespace formsolve
       if (!t.curve_file.empty())
         {
           const auto lines = read_on_root<tools::ProfileLines>(comm, [&]() {
-            return tools::read_profile_csv(t.curve_file);
+            return tools::read_profile_csv(t.curve_file,
+                                           "Trimming/Curve file",
+                                           "x, y",
+                                           false);
           });
           curve            = lines.points;
           parameters::require(curve.size() >= 2,

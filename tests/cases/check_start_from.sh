@@ -144,9 +144,5 @@ bad same_folder "Output/Output directory: '$out/first' is the folder Geometry/St
   --set "Geometry/Start from=$out/first" --set "Output/Output directory=$out/first"
 bad inside_folder "Output/Output directory: '$out/first/next' lies in the folder Geometry/Start from reads" \
   --set "Geometry/Start from=$out/first" --set "Output/Output directory=$out/first/next"
-run "$out/trimmed.log" --set "Output/Output directory=$out/trimmed" "${quiet[@]}" \
-  --set "Tools/Punch/Stroke=0.5" --set "Trimming/Planes=r < 28" || { cat "$out/trimmed.log"; fail "the trimmed run"; }
-bad trimmed "trimmed its part (Trimming); a next operation on a trimmed part is not available yet" \
-  --set "Geometry/Start from=$out/trimmed"
 [ "$(snapshot "$out/first")" = "$before" ] || fail "a bad Start from changed $out/first"
 echo "ok: next operation on $ranks rank(s)"

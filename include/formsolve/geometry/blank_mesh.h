@@ -31,12 +31,23 @@ namespace formsolve
     unsigned int initial_mesh_level(const parameters::Mesh &mesh);
 
     /// Fills @p tria (empty) with the coarse mesh only, as a checkpoint's
-    /// forest is loaded onto it.
+    /// forest is loaded onto it (or, serial, to build a trimmed part's mesh
+    /// from; the rim's manifold comes with it).
     template <int dim>
-    void create_coarse_blank_mesh(
-      const parameters::Geometry                        &geometry,
-      const parameters::Mesh                            &mesh,
-      dealii::parallel::distributed::Triangulation<dim> &tria);
+    void create_coarse_blank_mesh(const parameters::Geometry &geometry,
+                                  const parameters::Mesh     &mesh,
+                                  dealii::Triangulation<dim> &tria);
+
+    /// The blank's boundary id of a boundary face with centre @p c in the
+    /// reference configuration: a symmetry plane or the axis by its
+    /// position, else free_surface.
+    template <int dim>
+    dealii::types::boundary_id boundary_id(const parameters::Geometry &geometry,
+                                           const dealii::Point<dim>   &c);
+    /// boundary_id() on every boundary face of @p tria.
+    template <int dim>
+    void set_boundary_ids(const parameters::Geometry &geometry,
+                          dealii::Triangulation<dim> &tria);
 
     /// Fills @p tria (empty) with the initial mesh of the blank in
     /// 0 <= z <= thickness; dim must be model::space_dimension(geometry.model).

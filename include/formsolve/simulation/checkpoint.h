@@ -33,12 +33,16 @@ namespace formsolve
     /// @p meta) into @p state, whose triangulation must be empty and whose
     /// Geometry and Mesh must be the writer's; returns the nodal fields as
     /// saved (State::transferable_fields() of the writer, then its sprung
-    /// displacement if meta "sprung" is 1). Errors name @p who.
+    /// displacement if meta "sprung" is 1). A trimmed part's checkpoint
+    /// (meta "trimmed" is 1) also holds which cells the part kept: into
+    /// @p kept (by active cell index, locally owned cells) if given.
+    /// Errors name @p who.
     template <int dim>
     std::vector<VectorType> load_part(const std::string &from,
                                       const Metadata    &meta,
                                       State<dim>        &state,
-                                      const std::string &who);
+                                      const std::string &who,
+                                      std::vector<bool> *kept = nullptr);
 
     template <int dim>
     class Checkpoint
@@ -53,10 +57,12 @@ namespace formsolve
       /// renames it to checkpoint when every rank has finished, so that a
       /// process killed at any moment leaves the last complete one. With
       /// @p sprung (owned, on the state's DoFs), the sprung part's
-      /// displacement is saved after the state's fields.
-      void save(const State<dim> &state,
-                const Metadata   &meta,
-                const VectorType *sprung = nullptr) const;
+      /// displacement is saved after the state's fields; with @p kept (a
+      /// trimmed part's cells, by active cell index), which cells it kept.
+      void save(const State<dim>        &state,
+                const Metadata          &meta,
+                const VectorType        *sprung = nullptr,
+                const std::vector<bool> *kept   = nullptr) const;
 
       /// Loads the newest complete checkpoint into @p state, whose
       /// triangulation must be empty; returns the time loop's values.

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <formsolve/simulation/checkpoint.h>
+#include <formsolve/state/history_update.h>
+#include <formsolve/trimming/part_mesh.h>
 
 #include <string>
 
@@ -19,12 +21,21 @@ namespace formsolve
       unsigned int steps  = 0;
       double       travel = 0;     // its punch travel at the end (mm)
       bool         sprung = false; // the shape after its springback
-      std::string  end_reason;
+      /// Trimmed: the part gets its own mesh (trimming/part_mesh.h).
+      bool               trimmed = false;
+      trimming::PartMesh part_mesh;
+      /// The part's volume (mm^3, the model) and integral of the equivalent
+      /// plastic strain at the start, and the earlier run's of it (its
+      /// trimming_volume and trimming_strain_integral; if untrimmed the
+      /// same).
+      double      volume = 0, earlier_volume = 0;
+      double      strain = 0, earlier_strain = 0;
+      std::string end_reason;
       /// Where and when its part split (run-summary.txt), "" if it did not.
       std::string split;
     };
 
-    /// Checks that Geometry/Start from names a finished, untrimmed run of
+    /// Checks that Geometry/Start from names a finished run of
     /// this Geometry, Mesh and Material, and that @p output_directory is
     /// not that folder; throws one message naming the entry otherwise.
     /// @p listing: this run's complete parameter listing.
@@ -33,12 +44,17 @@ namespace formsolve
                                 const std::string &listing);
 
     /// The lines of run-summary.txt that name the earlier run (start_from,
-    /// start_from_shape; empty values without one).
+    /// start_from_shape, start_from_trimmed, the part's volume and, if
+    /// trimmed, its mesh; empty values without one).
     std::string summary_lines(const EarlierRun *earlier);
 
     /// The earlier run's part into @p state (empty triangulation): mesh,
-    /// history (strain, damage, stresses), and its shape at rest.
+    /// history (strain, damage, stresses), and its shape at rest. A trimmed
+    /// part is moved onto a mesh of its own (@p update carries the volume
+    /// offsets); fills @p earlier's part_mesh and volumes.
     template <int dim>
-    void load_earlier_part(const EarlierRun &earlier, State<dim> &state);
+    void load_earlier_part(EarlierRun                      &earlier,
+                           State<dim>                      &state,
+                           const state::HistoryUpdate<dim> &update);
   } // namespace simulation
 } // namespace formsolve

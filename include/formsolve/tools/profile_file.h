@@ -29,7 +29,12 @@ namespace formsolve
 
     /// A CSV of r, z (mm), one point per line in the profile's order; lines
     /// starting with '#' and a header line without numbers are skipped.
-    ProfileLines read_profile_csv(const std::string &file);
+    /// Errors name the file as @p what and the two numbers as @p names; r
+    /// must be >= 0 if @p on_axis_side (a profile about the axis).
+    ProfileLines read_profile_csv(const std::string &file,
+                                  const std::string &what = "tool profile file",
+                                  const std::string &names        = "r, z",
+                                  const bool         on_axis_side = true);
 
     /// The line elements of a gmsh mesh, or of the curves of a .geo meshed
     /// with segments up to @p facet_size (mm), drawn in the x-z plane
