@@ -99,8 +99,7 @@ namespace formsolve
             mapping.transform_unit_to_real_cell(cell, centre);
           // Levels count from the initial mesh, which p4est may have refined
           // from a coarser one (geometry::initial_mesh_level).
-          Assert(cell->level() >= static_cast<int>(initial_level),
-                 ExcInternalError());
+          Assert(cell->level() >= initial_level, ExcInternalError());
           const unsigned int level = cell->level() - initial_level;
           // Size of the level-0 ancestor: children must not leave the band
           // just because they are smaller than the cell that entered it.
@@ -113,8 +112,9 @@ namespace formsolve
           const bool by_indicator =
             kelly && cell->refine_flag_set() && level < prm.indicator_level;
           const bool refine = level < refine_to || by_indicator;
+          // A trimmed part's coarse cells may lie above the initial level.
           const bool coarsen =
-            !refine && level > keep_to &&
+            !refine && level > keep_to && cell->level() > 0 &&
             (!kelly || cell->coarsen_flag_set() || level > prm.indicator_level);
           cell->clear_refine_flag();
           cell->clear_coarsen_flag();

@@ -165,6 +165,8 @@ namespace formsolve
                              prm.output.directory,
                              parameter_listing()));
           load_earlier_part(*earlier, state, history_update);
+          if (earlier->trimmed)
+            criteria.start_at_level(earlier->part_mesh.level);
         }
       for (const auto &line : place_tools_against_part(state))
         pcout << line << std::endl;

@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/mpi_remote_point_evaluation.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
@@ -184,6 +185,65 @@ namespace formsolve
           in[i] = all[i] > 0 ? in[i] / all[i] : 0;
         return in;
       }
+
+      /// The vertices of @p serial's cells that stay (@p in) on its side
+      /// faces (not the sheet's surfaces) that lie in a cut-away cell of
+      /// @p earlier: the rim of a cell the cut crosses. Located by rank 0
+      /// (a little inside the cell, where the search is quick), then sent
+      /// to all.
+      template <int dim>
+      std::vector<bool> outside(const state::State<dim>  &earlier,
+                                const KeptCells          &kept,
+                                const Triangulation<dim> &serial,
+                                const std::vector<bool>  &in)
+      {
+        const double              t = earlier.prm.geometry.thickness;
+        std::vector<Point<dim>>   points;
+        std::vector<unsigned int> index;
+        const bool root = Utilities::MPI::this_mpi_process(earlier.comm) == 0;
+        for (const auto &cell : serial.active_cell_iterators())
+          if (root && in[cell->active_cell_index()])
+            for (const unsigned int f : cell->face_indices())
+              {
+                const auto   face = cell->face(f);
+                const double z    = face->center()[dim - 1];
+                if (!face->at_boundary() || std::abs(z) < 1e-6 * t ||
+                    std::abs(z - t) < 1e-6 * t)
+                  continue;
+                for (const unsigned int v : face->vertex_indices())
+                  {
+                    points.push_back(face->vertex(v) +
+                                     1e-4 * (cell->center() - face->vertex(v)));
+                    index.push_back(face->vertex_index(v));
+                  }
+              }
+        Utilities::MPI::RemotePointEvaluation<dim> cache(1e-6, true);
+        cache.reinit(points, earlier.tria, earlier.reference_mapping);
+        std::vector<double> values, buffer;
+        cache.template evaluate_and_process<double>(
+          values,
+          buffer,
+          [&](const ArrayView<double> &out, const auto &data) {
+            for (unsigned int c = 0; c < data.cells.size(); ++c)
+              {
+                const typename Triangulation<dim>::active_cell_iterator cell(
+                  &earlier.tria,
+                  data.cells[c].first,
+                  data.cells[c].second);
+                for (unsigned int i = data.reference_point_ptrs[c];
+                     i < data.reference_point_ptrs[c + 1];
+                     ++i)
+                  out[i] = kept[cell->active_cell_index()] ? 0 : 1;
+              }
+          });
+        std::vector<char> flags(serial.n_vertices(), 0);
+        const auto       &ptrs = cache.get_point_ptrs();
+        for (std::size_t p = 0; p + 1 < ptrs.size(); ++p)
+          if (ptrs[p + 1] > ptrs[p] && values[ptrs[p]] > 0.5)
+            flags[index[p]] = 1;
+        flags = Utilities::MPI::broadcast(earlier.comm, flags, 0);
+        return std::vector<bool>(flags.begin(), flags.end());
+      }
     } // namespace
 
     template <int dim>
@@ -207,14 +267,15 @@ namespace formsolve
       // A cell stays if the part keeps most of it; nodes between cells that
       // stay and cells left out are the part's new edge.
       std::vector<bool> touches_in(serial.n_vertices()),
-        touches_out(serial.n_vertices());
+        touches_out(serial.n_vertices()), in(serial.n_active_cells());
       std::set<typename Triangulation<dim>::active_cell_iterator> left_out;
       for (const auto &cell : serial.active_cell_iterators())
         {
-          const bool in = fraction[cell->active_cell_index()] >= 0.5;
+          const bool i = fraction[cell->active_cell_index()] >= 0.5;
+          in[cell->active_cell_index()] = i;
           for (const unsigned int v : cell->vertex_indices())
-            (in ? touches_in : touches_out)[cell->vertex_index(v)] = true;
-          if (!in)
+            (i ? touches_in : touches_out)[cell->vertex_index(v)] = true;
+          if (!i)
             left_out.insert(cell);
         }
       r.left_out = left_out.size();
@@ -227,9 +288,11 @@ namespace formsolve
       // Each column of edge nodes (through the thickness) moves together
       // in plan, to the mean of its nodes' nearest points on the cut, so
       // that the layers stay planar and the columns upright.
-      const auto   surface = cut_surface(earlier, kept);
-      const double tol     = 1e-6 * g.thickness;
-      using Key            = std::array<long long, dim - 1>;
+      const auto surface = cut_surface(earlier, kept);
+      // Nodes of cells that stay on the blank's rim beyond the cut move too.
+      const auto   beyond = outside(earlier, kept, serial, in);
+      const double tol    = 1e-6 * g.thickness;
+      using Key           = std::array<long long, dim - 1>;
       std::map<Key, std::pair<Tensor<1, dim>, unsigned int>> columns;
       const auto key = [&](const Point<dim> &p) {
         Key k;
@@ -242,7 +305,8 @@ namespace formsolve
         for (const unsigned int v : cell->vertex_indices())
           {
             const unsigned int i = cell->vertex_index(v);
-            if (done[i] || !touches_in[i] || !touches_out[i] || surface.empty())
+            if (done[i] || !(touches_in[i] && (touches_out[i] || beyond[i])) ||
+                surface.empty())
               continue;
             done[i]            = true;
             const Point<dim> p = cell->vertex(v);

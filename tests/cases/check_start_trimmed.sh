@@ -32,7 +32,7 @@ import csv
 print(list(csv.DictReader(open('$out/$1/history.csv')))[-1]['holder_displacement'])"; }
 
 if [ "$mode" = 3d ]; then
-  prm=cup-quarter.prm
+  prm=cup-adaptive-short.prm # the shipped 3-D cup, refined at the radii
   first=(--set "Tools/Punch/Stroke=2")
   "$py" -c "
 import math

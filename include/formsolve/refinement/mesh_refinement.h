@@ -33,6 +33,14 @@ namespace formsolve
                          const tools::ToolSet<dim>        &tools,
                          unsigned int                      initial_level);
 
+      /// A trimmed part's own mesh starts at the earlier mesh's level
+      /// @p part_level: levels then count from the initial mesh's level
+      /// minus it (negative if the part's coarse cells are finer).
+      void start_at_level(const unsigned int part_level)
+      {
+        initial_level -= static_cast<int>(part_level);
+      }
+
       /// Sets refinement and coarsening flags on the locally owned cells of
       /// @p dof_handler's triangulation, positions from @p mapping (current
       /// configuration). Collective.
@@ -57,7 +65,7 @@ namespace formsolve
                               const dealii::Mapping<dim>    &mapping) const;
 
       parameters::MeshRefinement prm;
-      unsigned int               initial_level;
+      int                        initial_level;
       std::vector<unsigned int>  tool_level; // per tool of the ToolSet
     };
   } // namespace refinement
