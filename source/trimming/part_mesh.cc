@@ -93,20 +93,26 @@ namespace formsolve
               mine.push_back(face->vertex(v)[d]);
         };
         for (const auto &cell : s.tria.active_cell_iterators())
-          if (cell->is_locally_owned() && kept[cell->active_cell_index()])
+          {
+            if (!cell->is_locally_owned() || !kept[cell->active_cell_index()])
+              continue;
             for (const unsigned int f : cell->face_indices())
-              if (cell->at_boundary(f))
-                continue;
-              else if (!cell->neighbor(f)->has_children())
-                {
-                  if (!kept[cell->neighbor(f)->active_cell_index()])
-                    add(cell->face(f));
-                }
-              else // a finer cut-away neighbour
+              {
+                if (cell->at_boundary(f))
+                  continue;
+                if (!cell->neighbor(f)->has_children())
+                  {
+                    if (!kept[cell->neighbor(f)->active_cell_index()])
+                      add(cell->face(f));
+                    continue;
+                  }
+                // A finer cut-away neighbour.
                 for (unsigned int c = 0; c < cell->face(f)->n_children(); ++c)
                   if (!kept[cell->neighbor_child_on_subface(f, c)
                               ->active_cell_index()])
                     add(cell->face(f)->child(c));
+              }
+          }
         std::vector<FaceVertices<dim>> faces;
         constexpr unsigned int         n = GeometryInfo<dim>::vertices_per_face;
         for (const auto &part : Utilities::MPI::all_gather(s.comm, mine))
@@ -244,6 +250,101 @@ namespace formsolve
         flags = Utilities::MPI::broadcast(earlier.comm, flags, 0);
         return std::vector<bool>(flags.begin(), flags.end());
       }
+
+      /// Moves the nodes of @p serial between cells that stay (@p in) and
+      /// cells left out, and those of cells that stay on the rim beyond the
+      /// cut, onto the cut of @p earlier (eq. 14e); fills @p r's moves.
+      template <int dim>
+      void move_edge(const state::State<dim> &earlier,
+                     const KeptCells         &kept,
+                     Triangulation<dim>      &serial,
+                     const std::vector<bool> &in,
+                     const std::vector<bool> &touches_in,
+                     const std::vector<bool> &touches_out,
+                     PartMesh                &r)
+      {
+        const auto &g = earlier.prm.geometry;
+        // Each column of edge nodes (through the thickness) moves together
+        // in plan, to the mean of its nodes' nearest points on the cut, so
+        // that the layers stay planar and the columns upright.
+        const auto surface = cut_surface(earlier, kept);
+        // Nodes of cells that stay on the blank's rim beyond the cut move too.
+        const auto   beyond = outside(earlier, kept, serial, in);
+        const double tol    = 1e-6 * g.thickness;
+        using Key           = std::array<long long, dim - 1>;
+        std::map<Key, std::pair<Tensor<1, dim>, unsigned int>> columns;
+        const auto key = [&](const Point<dim> &p) {
+          Key k;
+          for (unsigned int d = 0; d + 1 < dim; ++d)
+            k[d] = std::llround(p[d] / tol);
+          return k;
+        };
+        std::vector<bool> done(serial.n_vertices());
+        for (const auto &cell : serial.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const unsigned int i = cell->vertex_index(v);
+              if (done[i] ||
+                  !(touches_in[i] && (touches_out[i] || beyond[i])) ||
+                  surface.empty())
+                continue;
+              done[i]            = true;
+              const Point<dim> p = cell->vertex(v);
+              Point<dim>       best;
+              double           d = std::numeric_limits<double>::max();
+              for (const auto &f : surface)
+                {
+                  const Point<dim> x = nearest_on_face(p, f);
+                  if (p.distance(x) < d)
+                    d = p.distance(x), best = x;
+                }
+              auto &c = columns[key(p)];
+              c.first += best - p;
+              ++c.second;
+            }
+        std::fill(done.begin(), done.end(), false);
+        std::set<typename Triangulation<dim>::active_cell_iterator> moved;
+        for (const auto &cell : serial.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const unsigned int i = cell->vertex_index(v);
+              const auto         c = columns.find(key(cell->vertex(v)));
+              if (!touches_in[i] || c == columns.end())
+                continue;
+              moved.insert(cell);
+              if (done[i])
+                continue;
+              done[i] = true;
+              Tensor<1, dim> shift;
+              for (unsigned int d = 0; d + 1 < dim; ++d)
+                {
+                  const bool on_plane =
+                    std::abs(cell->vertex(v)[d]) < tol &&
+                    ((d == 0 && model::symmetric_in_x(g.model)) ||
+                     (d == 1 && model::symmetric_in_y(g.model)) ||
+                     (d == 0 && g.model == model::Model::axisymmetric));
+                  if (!on_plane)
+                    shift[d] = c->second.first[d] / c->second.second;
+                }
+              r.largest_move = std::max(r.largest_move, shift.norm());
+              cell->vertex(v) += shift;
+            }
+        for (const auto &cell : moved)
+          if (in[cell->active_cell_index()])
+            {
+              const auto [lo, hi] = corner_jacobians<dim>(cell);
+              AssertThrow(lo > 0,
+                          ExcMessage(
+                            "Geometry/Start from: moving the earlier mesh's "
+                            "nodes onto the trimmed edge turns a cell at " +
+                            Utilities::to_string(cell->center()[0]) + ", " +
+                            Utilities::to_string(cell->center()[1]) +
+                            " mm inside out; trim along a smoother line or "
+                            "refine the earlier run's mesh (Mesh/Planform "
+                            "refinements)"));
+              r.worst_corner_ratio = std::min(r.worst_corner_ratio, lo / hi);
+            }
+      }
     } // namespace
 
     template <int dim>
@@ -285,85 +386,7 @@ namespace formsolve
                              "smaller than any cell of the earlier run's "
                              "coarsest mesh level; nothing to form"));
 
-      // Each column of edge nodes (through the thickness) moves together
-      // in plan, to the mean of its nodes' nearest points on the cut, so
-      // that the layers stay planar and the columns upright.
-      const auto surface = cut_surface(earlier, kept);
-      // Nodes of cells that stay on the blank's rim beyond the cut move too.
-      const auto   beyond = outside(earlier, kept, serial, in);
-      const double tol    = 1e-6 * g.thickness;
-      using Key           = std::array<long long, dim - 1>;
-      std::map<Key, std::pair<Tensor<1, dim>, unsigned int>> columns;
-      const auto key = [&](const Point<dim> &p) {
-        Key k;
-        for (unsigned int d = 0; d + 1 < dim; ++d)
-          k[d] = std::llround(p[d] / tol);
-        return k;
-      };
-      std::vector<bool> done(serial.n_vertices());
-      for (const auto &cell : serial.active_cell_iterators())
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            const unsigned int i = cell->vertex_index(v);
-            if (done[i] || !(touches_in[i] && (touches_out[i] || beyond[i])) ||
-                surface.empty())
-              continue;
-            done[i]            = true;
-            const Point<dim> p = cell->vertex(v);
-            Point<dim>       best;
-            double           d = std::numeric_limits<double>::max();
-            for (const auto &f : surface)
-              {
-                const Point<dim> x = nearest_on_face(p, f);
-                if (p.distance(x) < d)
-                  d = p.distance(x), best = x;
-              }
-            auto &c = columns[key(p)];
-            c.first += best - p;
-            ++c.second;
-          }
-      std::fill(done.begin(), done.end(), false);
-      std::set<typename Triangulation<dim>::active_cell_iterator> moved;
-      for (const auto &cell : serial.active_cell_iterators())
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            const unsigned int i = cell->vertex_index(v);
-            const auto         c = columns.find(key(cell->vertex(v)));
-            if (!touches_in[i] || c == columns.end())
-              continue;
-            moved.insert(cell);
-            if (done[i])
-              continue;
-            done[i] = true;
-            Tensor<1, dim> shift;
-            for (unsigned int d = 0; d + 1 < dim; ++d)
-              {
-                const bool on_plane =
-                  std::abs(cell->vertex(v)[d]) < tol &&
-                  ((d == 0 && model::symmetric_in_x(g.model)) ||
-                   (d == 1 && model::symmetric_in_y(g.model)) ||
-                   (d == 0 && g.model == model::Model::axisymmetric));
-                if (!on_plane)
-                  shift[d] = c->second.first[d] / c->second.second;
-              }
-            r.largest_move = std::max(r.largest_move, shift.norm());
-            cell->vertex(v) += shift;
-          }
-      for (const auto &cell : moved)
-        if (!left_out.count(cell))
-          {
-            const auto [lo, hi] = corner_jacobians<dim>(cell);
-            AssertThrow(lo > 0,
-                        ExcMessage(
-                          "Geometry/Start from: moving the earlier mesh's "
-                          "nodes onto the trimmed edge turns a cell at " +
-                          Utilities::to_string(cell->center()[0]) + ", " +
-                          Utilities::to_string(cell->center()[1]) +
-                          " mm inside out; trim along a smoother line or "
-                          "refine the earlier run's mesh (Mesh/Planform "
-                          "refinements)"));
-            r.worst_corner_ratio = std::min(r.worst_corner_ratio, lo / hi);
-          }
+      move_edge(earlier, kept, serial, in, touches_in, touches_out, r);
 
       Triangulation<dim> part;
       GridGenerator::create_triangulation_with_removed_cells(serial,
