@@ -113,6 +113,8 @@ namespace formsolve
           r.earlier_strain = std::stod(value(s, "trimming_strain_integral"));
         }
       r.end_reason = value(s, "end_reason");
+      if (value(s, "trimming") == "failed")
+        r.trim_failure = value(s, "trimming_failure");
       if (value(s, "split") == "yes")
         r.split = "at punch travel " + value(s, "split_travel") + " mm, at " +
                   value(s, "split_location") + " (" +

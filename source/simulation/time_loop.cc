@@ -191,6 +191,10 @@ namespace formsolve
               << earlier->steps << " steps to punch travel " << earlier->travel
               << " mm: " << earlier->end_reason
               << "); tools and time start afresh" << std::endl;
+      if (earlier && !earlier->trim_failure.empty())
+        pcout << "warning: the trimming of that part failed ("
+              << earlier->trim_failure << "); this run forms the untrimmed part"
+              << std::endl;
       if (earlier && earlier->trimmed)
         {
           const auto &m = earlier->part_mesh;

@@ -359,6 +359,10 @@ namespace formsolve
         w.push_back("Geometry/Start from: the part of " + earlier->folder +
                     " had split in that run (" + earlier->split +
                     "); this run formed a split part further");
+      if (earlier && !earlier->trim_failure.empty())
+        w.push_back("Geometry/Start from: the trimming of " + earlier->folder +
+                    " failed (" + earlier->trim_failure +
+                    "); this run formed the untrimmed part");
       return w;
     }
 

@@ -10,7 +10,8 @@
 #   (trimming_volume, trimming_strain_integral), the run goes to its stroke,
 #   the earlier folder is left as it was, and RANKS > 1 gives the same
 #   history as 1 rank.
-# - Axisymmetric (default): also from the trimmed and sprung part. With "3d":
+# - Axisymmetric (default): also from the trimmed and sprung part, and from
+#   a run whose trim failed (a warning, the untrimmed part). With "3d":
 #   the quarter cup cut by a circle (Trimming/Curve file).
 # Usage: check_start_trimmed.sh FORMSOLVE CASES OUTDIR RANKS PYTHON [3d]
 set -uo pipefail
@@ -94,6 +95,19 @@ if [ "$ranks" -gt 1 ]; then
   numdiff -q -s ', \t\n' -r 1e-8 -a 1e-10 "$out/next-cut/history.csv" "$out/next-cut-1rank/history.csv" ||
     fail "the next operation on the trimmed part differs between $ranks ranks and 1"
   echo "ok: the next operation on the trimmed part is the same on $ranks ranks and 1"
+fi
+
+if [ "$mode" != 3d ]; then # a trim that failed: the untrimmed part, with a warning
+  first=()
+  run "$ranks" failed --set "Trimming/Planes=r < 0.01"
+  grep -q "^trimming = failed" "$out/failed/run-summary.txt" || fail "the trim keeping nothing did not fail"
+  run "$ranks" next-failed --set "Geometry/Start from=$out/failed" "${next[@]}" \
+    --set "Tools/Blank holder/Gap=$(holder failed)"
+  grep -q "^warning: the trimming of that part failed" "$out/next-failed.log" ||
+    fail "no warning that the earlier trim failed"
+  grep -q "start_from_trimmed = no" "$out/next-failed/run-summary.txt" ||
+    fail "a failed trim was taken as trimmed"
+  echo "ok: a failed trim is said and the untrimmed part formed"
 fi
 
 if [ "$mode" != 3d ]; then # the trimmed and sprung part, tools placed against it

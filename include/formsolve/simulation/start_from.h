@@ -33,6 +33,8 @@ namespace formsolve
       std::string end_reason;
       /// Where and when its part split (run-summary.txt), "" if it did not.
       std::string split;
+      /// Why its Trimming failed (run-summary.txt), "" if it did not.
+      std::string trim_failure;
     };
 
     /// Checks that Geometry/Start from names a finished run of
