@@ -1,10 +1,10 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/mpi_remote_point_evaluation.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
 #include <formsolve/geometry/blank_mesh.h>
 #include <formsolve/model/dimensions.h>
+#include <formsolve/trimming/earlier_values.h>
 #include <formsolve/trimming/part_mesh.h>
 
 #include <algorithm>
@@ -224,28 +224,14 @@ namespace formsolve
                   }
               }
         Utilities::MPI::RemotePointEvaluation<dim> cache(1e-6, true);
-        cache.reinit(points, earlier.tria, earlier.reference_mapping);
-        std::vector<double> values, buffer;
-        cache.template evaluate_and_process<double>(
-          values,
-          buffer,
-          [&](const ArrayView<double> &out, const auto &data) {
-            for (unsigned int c = 0; c < data.cells.size(); ++c)
-              {
-                const typename Triangulation<dim>::active_cell_iterator cell(
-                  &earlier.tria,
-                  data.cells[c].first,
-                  data.cells[c].second);
-                for (unsigned int i = data.reference_point_ptrs[c];
-                     i < data.reference_point_ptrs[c + 1];
-                     ++i)
-                  out[i] = kept[cell->active_cell_index()] ? 0 : 1;
-              }
+        locate(earlier, points, cache, nullptr);
+        const auto cut_away =
+          cell_values(earlier, cache, [&](const auto &cell, const auto &) {
+            return kept[cell->active_cell_index()] ? 0. : 1.;
           });
         std::vector<char> flags(serial.n_vertices(), 0);
-        const auto       &ptrs = cache.get_point_ptrs();
-        for (std::size_t p = 0; p + 1 < ptrs.size(); ++p)
-          if (ptrs[p + 1] > ptrs[p] && values[ptrs[p]] > 0.5)
+        for (std::size_t p = 0; p < cut_away.size(); ++p)
+          if (cut_away[p] > 0.5) // NaN (not found): not beyond
             flags[index[p]] = 1;
         flags = Utilities::MPI::broadcast(earlier.comm, flags, 0);
         return std::vector<bool>(flags.begin(), flags.end());

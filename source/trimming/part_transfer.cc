@@ -1,9 +1,8 @@
-#include <deal.II/base/mpi.h>
-#include <deal.II/base/mpi_remote_point_evaluation.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/vector_tools_evaluate.h>
 
 #include <formsolve/model/dimensions.h>
+#include <formsolve/trimming/earlier_values.h>
 #include <formsolve/trimming/part_transfer.h>
 
 #include <limits>
@@ -17,58 +16,6 @@ namespace formsolve
 
     namespace
     {
-      /// @p points (reference configuration) located in @p earlier's mesh,
-      /// one cell each; throws if one lies outside it.
-      template <int dim>
-      void locate(const state::State<dim>                    &earlier,
-                  const std::vector<Point<dim>>              &points,
-                  Utilities::MPI::RemotePointEvaluation<dim> &cache,
-                  const char                                 *what)
-      {
-        cache.reinit(points, earlier.tria, earlier.reference_mapping);
-        unsigned int missing = 0;
-        for (unsigned int i = 0; i < points.size(); ++i)
-          missing += !cache.point_found(i);
-        missing = Utilities::MPI::sum(missing, earlier.comm);
-        AssertThrow(missing == 0,
-                    ExcMessage("Geometry/Start from: " +
-                               std::to_string(missing) + " " + what +
-                               " of the trimmed part's mesh lie outside the "
-                               "earlier run's part"));
-      }
-
-      /// A value of the earlier cell holding each point, by
-      /// @p value(cell, unit point), in the order of the points.
-      template <int dim, typename Value>
-      std::vector<double>
-      cell_values(const state::State<dim>                          &earlier,
-                  const Utilities::MPI::RemotePointEvaluation<dim> &cache,
-                  const Value                                      &value)
-      {
-        using Cell = typename Triangulation<dim>::active_cell_iterator;
-        std::vector<double> out, buffer;
-        cache.template evaluate_and_process<double>(
-          out,
-          buffer,
-          [&](const ArrayView<double> &values, const auto &data) {
-            for (unsigned int c = 0; c < data.cells.size(); ++c)
-              {
-                const Cell cell(&earlier.tria,
-                                data.cells[c].first,
-                                data.cells[c].second);
-                for (unsigned int i = data.reference_point_ptrs[c];
-                     i < data.reference_point_ptrs[c + 1];
-                     ++i)
-                  values[i] = value(cell, data.reference_point_values[i]);
-              }
-          });
-        const auto         &ptrs = cache.get_point_ptrs();
-        std::vector<double> first(ptrs.size() - 1);
-        for (std::size_t p = 0; p + 1 < ptrs.size(); ++p)
-          first[p] = out[ptrs[p]];
-        return first;
-      }
-
       /// The displacements @p fields of @p earlier at @p part's nodes
       /// (reference configuration, eq. 14f).
       template <int dim>
