@@ -24,10 +24,17 @@ What CalculiX 2.20 does with it (6 December 2026):
   --set "Material/Yield criterion=von Mises"`) gives 1414 N and 4417 N.
   64 x 2 elements reach 5 mm (2 x 1435 N against formsolve's 1558 N). The
   springback step diverges. Not a comparison yet.
+- --holder-force (the holder held in x and tied in z to one node carrying
+  9.8 kN, the half of formsolve's `Control = force`, as the cup's deck
+  does; 7 December 2026, 128 x 2): with the stick slope LAM = 1e4 N/mm^3
+  every increment takes 55-60 iterations from the first on; with LAM=1e3
+  the draw reaches 0.44 mm and then cuts its increment without converging.
 
-Usage: channel_deck.py NX NY STROKE OUT.inp [--springback]; ccx -i OUT
+Usage: [LAM=slope] channel_deck.py NX NY STROKE OUT.inp [--springback]
+       [--holder-force]; ccx -i OUT
 """
 import math
+import os
 import sys
 
 T, L, B = 0.78, 175.0, 35.0        # thickness, half length, width (mm)
@@ -35,6 +42,8 @@ NX = int(sys.argv[1]) if len(sys.argv) > 1 else 256
 NY = int(sys.argv[2]) if len(sys.argv) > 2 else 2
 STROKE = float(sys.argv[3]) if len(sys.argv) > 3 else 50.0
 MU, K = 0.144, 1.0e4
+LAM = float(os.environ.get("LAM", "1e4"))   # the friction's stick slope
+HOLDER_FORCE = "--holder-force" in sys.argv
 E, NU = 206000.0, 0.3
 out = []
 
@@ -124,6 +133,7 @@ for name, (prof, inside) in tools.items():
     tool_elems[name], tool_faces[name] = els, faces
     ref[name] = a + b
 
+HM = ref["HOLDER"][0]
 out.append("*ELEMENT, TYPE=CPE8R, ELSET=SHEET")
 out += [f"{e}, " + ", ".join(map(str, n)) for e, n in sheet]
 for name, els in tool_elems.items():
@@ -150,18 +160,25 @@ out += ["*SOLID SECTION, ELSET=SHEET, MATERIAL=STEEL", f"{B}"]
 for name in tools:
     out += [f"*SOLID SECTION, ELSET={name}, MATERIAL=RIGID", f"{B}"]
 
+if HOLDER_FORCE:
+    out += ["*EQUATION"]
+    for n in ref["HOLDER"][1:]:
+        out += ["2", f"{n}, 2, 1., {HM}, 2, -1."]
 out += ["*SURFACE INTERACTION, NAME=TOOLS", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR",
-        f"{K}, 1e-3, 1e-3", "*FRICTION", f"{MU}, 1e4"]
+        f"{K}, 1e-3, 1e-3", "*FRICTION", f"{MU}, {LAM}"]
 for slave, master in [("SHEETTOP", "PUNCHS"), ("SHEETBOT", "DIES"), ("SHEETTOP", "HOLDERS")]:
     out += [f"*CONTACT PAIR, INTERACTION=TOOLS, TYPE=SURFACE TO SURFACE", f"{slave}, {master}"]
 
 # Die and holder (at the fixed gap 0) stand, the punch moves: every tool
 # node is prescribed (the tools are rigid); the punch force is the sum of
 # its nodes' reactions.
-out += ["*BOUNDARY", "SYMM, 1, 1", "DIEN, 1, 2", "HOLDERN, 1, 2", "PUNCHN, 1, 1"]
+out += ["*BOUNDARY", "SYMM, 1, 1", "DIEN, 1, 2", "HOLDERN, 1, 1" if HOLDER_FORCE else "HOLDERN, 1, 2",
+        "PUNCHN, 1, 1"]
+holder_load = ["*CLOAD", f"{HM}, 2, -9800."] if HOLDER_FORCE else []
+holder_hold = [f"{HM}, 2, 2", "*CLOAD, OP=NEW", f"{HM}, 2, 0."] if HOLDER_FORCE else []
 # Step 2: the draw.
 out += ["*STEP, NLGEOM, INC=100000", "*STATIC", f"{0.05 / STROKE}, 1.0, 1e-7, {0.25 / STROKE}",
-        "*BOUNDARY", f"PUNCHN, 2, 2, {-STROKE}",
+        "*BOUNDARY", f"PUNCHN, 2, 2, {-STROKE}", *holder_load,
         "*NODE PRINT, NSET=PUNCHN, TOTALS=ONLY", "RF",
         "*NODE PRINT, NSET=HOLDERN, TOTALS=ONLY", "RF",
         "*NODE PRINT, NSET=MID", "U", "*NODE FILE", "U", "*EL FILE", "S, PEEQ", "*END STEP"]
@@ -169,6 +186,6 @@ out += ["*STEP, NLGEOM, INC=100000", "*STATIC", f"{0.05 / STROKE}, 1.0, 1e-7, {0
 if "--springback" in sys.argv:
   out += ["*STEP, NLGEOM, INC=1000", "*STATIC", "0.1, 1.0, 1e-6, 0.25",
         "*MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE", "SHEETTOP, PUNCHS", "SHEETBOT, DIES", "SHEETTOP, HOLDERS",
-        "*BOUNDARY, FIXED", "CENTRE, 2, 2",
+        "*BOUNDARY, FIXED", "CENTRE, 2, 2", *holder_hold,
         "*NODE PRINT, NSET=MID", "U", "*NODE FILE", "U", "*EL FILE", "S, PEEQ", "*END STEP"]
 open(sys.argv[4] if len(sys.argv) > 4 else "channel.inp", "w").write("\n".join(out) + "\n")

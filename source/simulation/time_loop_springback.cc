@@ -116,8 +116,8 @@ namespace formsolve
                                            t.die.profile_radius};
       channel = std::make_unique<std::array<springback::ChannelMeasures, 2>>(
         std::array<springback::ChannelMeasures, 2>{
-          springback::channel_measures(profile, tools, false),
-          springback::channel_measures(profile, tools, true)});
+          {springback::channel_measures(profile, tools, false),
+           springback::channel_measures(profile, tools, true)}});
       const auto &[before, after] = *channel;
       if (std::isnan(after.theta1))
         pcout << "channel: no angles: bottom, wall and flange have "

@@ -95,6 +95,8 @@ namespace formsolve
       u_ghost.reinit(dh.locally_owned_dofs(), all_relevant, state.comm);
       for (auto *v : {&cell_residual, &cell_end, &cell_mean, &cell_yielded})
         v->reinit(state.tria.n_active_cells());
+      for (auto &v : cell_stress)
+        v.reinit(state.tria.n_active_cells());
     }
 
     template <int dim>
@@ -151,7 +153,9 @@ namespace formsolve
             cell_residual[c]     = eq / cell_volume;
             cell_end[c]          = eq_end / cell_volume;
             cell_mean[c]         = trace(mean_stress) / (3 * cell_volume);
-            cell_yielded[c]      = cell_yield / cell_volume;
+            for (unsigned int i = 0; i < cell_stress.size(); ++i)
+              cell_stress[i][c] = mean_stress.access_raw_entry(i) / cell_volume;
+            cell_yielded[c] = cell_yield / cell_volume;
             yielded += cell_yield;
             volume += cell_volume;
             cell->get_dof_indices(dofs);

@@ -18,6 +18,34 @@ namespace formsolve
   {
     using namespace dealii;
 
+    namespace
+    {
+      // In SymmetricTensor<2, 3>'s unrolled order; in 2-D the third axis
+      // is the hoop direction (axisymmetric) or the section's normal y
+      // (plane strain), and the components coupling it vanish.
+      template <int dim>
+      std::vector<std::string>
+      residual_stress_names(const model::Kinematics<dim> &kinematics)
+      {
+        if (dim == 3)
+          return {"residual_stress_xx",
+                  "residual_stress_yy",
+                  "residual_stress_zz",
+                  "residual_stress_xy",
+                  "residual_stress_xz",
+                  "residual_stress_yz"};
+        if (kinematics.axisymmetric())
+          return {"residual_stress_rr",
+                  "residual_stress_zz",
+                  "residual_stress_hoop",
+                  "residual_stress_rz"};
+        return {"residual_stress_xx",
+                "residual_stress_zz",
+                "residual_stress_yy",
+                "residual_stress_xz"};
+      }
+    } // namespace
+
     template <int dim>
     std::string write_sprung_part(const Release<dim>      &release,
                                   const state::State<dim> &state,
@@ -59,6 +87,13 @@ namespace formsolve
       out.add_data_vector(release.residual_mean(),
                           "residual_mean_stress",
                           DataOut<dim>::type_cell_data);
+      // The residual stress's components in the kinematics' frame, named
+      // as a user reads them in the model's section.
+      const auto names = residual_stress_names<dim>(state.kinematics);
+      for (unsigned int k = 0; k < names.size(); ++k)
+        out.add_data_vector(release.residual_stress(k),
+                            names[k],
+                            DataOut<dim>::type_cell_data);
       out.add_data_vector(release.end_equivalent(),
                           "end_equivalent_stress",
                           DataOut<dim>::type_cell_data);

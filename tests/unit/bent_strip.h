@@ -44,11 +44,12 @@ namespace bent_strip
   };
 
   /// Forming element, layers, refinements; the release's degree (0: the
-  /// forming's) and the bound on the curvature's relative error.
+  /// forming's), the bound on the curvature's relative error and on a
+  /// cell's residual stress error (over s').
   struct Variant
   {
     unsigned int degree, layers, refinements, release;
-    double       bound;
+    double       bound, residual_bound = 1;
   };
 
   parameters::Run strip(const double r, const Variant &v)

@@ -25,6 +25,7 @@
 #include <formsolve/springback/supports.h>
 #include <formsolve/trimming/trim_cells.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -113,6 +114,13 @@ namespace formsolve
       }
       const dealii::Vector<float> &end_equivalent() const { return cell_end; }
       const dealii::Vector<float> &residual_mean() const { return cell_mean; }
+      /// The cell mean of the residual stress's component @p k (MPa), k in
+      /// SymmetricTensor<2, 3>'s unrolled order (00, 11, 22, 01, 02, 12) of
+      /// the kinematics' frame.
+      const dealii::Vector<float> &residual_stress(const unsigned int k) const
+      {
+        return cell_stress[k];
+      }
       const dealii::Vector<float> &yielded() const { return cell_yielded; }
 
     private:
@@ -145,6 +153,7 @@ namespace formsolve
       VectorType            u, residual, defect, u_ghost, u_full;
       VectorType            part_ghost; // u, ghosted
       dealii::Vector<float> cell_residual, cell_end, cell_mean, cell_yielded;
+      std::array<dealii::Vector<float>, 6> cell_stress;
     };
   } // namespace springback
 } // namespace formsolve
