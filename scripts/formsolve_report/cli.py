@@ -11,7 +11,7 @@ from .outcome import outcome
 from .page import write_report
 from .pictures import clear_pictures, pictures_of
 from .readers import fail
-from .render import Rendering, render_pictures
+from .render import Rendering, part_outputs, render_pictures
 from .rundata import Run
 from .split import split_column, split_event
 from .tables import key_rows, solver_rows, zone_check
@@ -89,7 +89,7 @@ def main(argv, launcher=None):
     os.makedirs(report, exist_ok=True)
     clear_pictures(report)
     # The VTK subprocess first: it renders while this process makes the plots.
-    rendering = Rendering(args, report) if run.vtu is not None else None
+    rendering = Rendering(args, report) if run.vtu is not None or part_outputs(run) else None
     timing.lap("report", "read the run, start the rendering")
     plt = pyplot()
     timing.lap("report", "import matplotlib")

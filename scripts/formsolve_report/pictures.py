@@ -11,7 +11,8 @@ from .plots import damage_plot, fld_plot, force_plot, rim_plot, thickness_plot
 from .springback import springback_plot
 
 PICTURES = ("force-travel.png", "thickness-change.png", "thickness.png", "fld.png", "damage.png",
-            "earing.png", "draw-in.png", "penetration.png", "springback.png", "springback-part.png")
+            "earing.png", "draw-in.png", "penetration.png", "springback.png", "springback-part.png",
+            "trimmed-part.png")
 
 
 def clear_pictures(report):
@@ -90,7 +91,7 @@ def force_plots(run, split, section, plt):
 
 def rendered(run, args, split, rendering, section):
     """The part and the penetration, once the --render subprocess is done."""
-    if run.vtu is None:
+    if rendering is None:
         section.notes.append("no VTU output at or before the report's travel: no rendered pictures")
         return
     problem = rendering.wait()
@@ -98,6 +99,16 @@ def rendered(run, args, split, rendering, section):
     if problem:
         section.notes.append(problem)
         return
+    if run.vtu is None:
+        section.notes.append("no VTU output of the forming at or before the report's travel: only the "
+                             "trimmed or sprung part is rendered")
+    else:
+        part_picture(run, args, split, section)
+    part_after_pictures(run, section)
+
+
+def part_picture(run, args, split, section):
+    """The formed part and the penetration (rendered by the --render subprocess)."""
     section.pictures.append(("The part", "thickness-change.png",
                              f"Thickness change at punch travel {run.vtu_travel:.2f} mm, thinning positive" +
                              (", the tools faint" if run.tools and not args.no_tools else "") +
@@ -107,13 +118,22 @@ def rendered(run, args, split, rendering, section):
                               "stands for; its end faces show the section" if run.plane_strain else "") +
                              (". The black ball marks the split column."
                               if split and split["R0"] is not None else ".")))
+    section.checks.append(("Contact penetration", "penetration.png", "Contact penetration in micrometres (a "
+                           "solver check: the allowed penetration is Contact/Allowed penetration)."))
+
+
+def part_after_pictures(run, section):
+    """The trimmed and the sprung part, where the run wrote them."""
+    if os.path.exists(os.path.join(section.report, "trimmed-part.png")):
+        section.pictures.append(("The trimmed part", "trimmed-part.png",
+                                 "The part after the Trimming subsection's cuts (trimmed_*.pvtu), its thickness "
+                                 "change from the thickness strain, thinning positive; the outline is "
+                                 "trim-outline.csv."))
     if os.path.exists(os.path.join(section.report, "springback-part.png")):
         section.pictures.append(("The part after springback", "springback-part.png",
                                  "The part taken out of the tools and released (springback_*.pvtu), coloured "
                                  "by the springback displacement; held by "
                                  f"{run.summary.get('springback_supports', '?')}."))
-    section.checks.append(("Contact penetration", "penetration.png", "Contact penetration in micrometres (a "
-                           "solver check: the allowed penetration is Contact/Allowed penetration)."))
 
 
 def sheet_plots(run, split, at_split, section, plt):

@@ -75,7 +75,10 @@ def render_pictures(args, report):
     timing.lap("render", "import the VTK classes")
     run = Run(args)
     if run.vtu is None:
-        raise SystemExit("no VTU output at or before the report's travel")
+        # Only the trimmed or the sprung part (Output interval = 0).
+        trimmed_picture(run, args, report, vtk)
+        springback_picture(run, args, report, vtk)
+        return
     # displacement: to find the split's column in the grid (scene.column_position)
     grid = merged(read_vtu(os.path.join(run.directory, run.vtu), FIELDS + ("displacement",)), vtk)
     add_penetration(grid, vtk)
@@ -96,7 +99,40 @@ def render_pictures(args, report):
             ("penetration_um", "contact\npenetration\n(micrometres)", "penetration.png", None)):
         window.draw(field, title, fixed, os.path.join(report, name))
         timing.lap("render", name)
+    trimmed_picture(run, args, report, vtk)
     springback_picture(run, args, report, vtk)
+
+
+def part_outputs(run):
+    """Whether the run wrote the trimmed or the sprung part (VTU files the
+    rendering draws even without the forming's output)."""
+    return run.as_of is None and any(glob.glob(os.path.join(run.directory, pattern))
+                                     for pattern in ("trimmed_*.pvtu", "springback_*.pvtu"))
+
+
+def trimmed_picture(run, args, report, vtk):
+    """trimmed-part.png: the trimmed part (trimmed_*.pvtu, the Trimming
+    subsection) coloured by the thickness change from its thickness strain,
+    completed like the part, without tools."""
+    files = sorted(glob.glob(os.path.join(run.directory, "trimmed_*.pvtu")))
+    if not files or run.as_of is not None:
+        return
+    from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+    import numpy as np
+    grid = merged(read_vtu(files[-1], ("thickness_strain",)), vtk)
+    strain = vtk_to_numpy(grid.GetPointData().GetArray("thickness_strain"))
+    change = numpy_to_vtk(100 * (1 - np.exp(strain)), deep=1)
+    change.SetName("thinning_percent")
+    grid.GetPointData().AddArray(change)
+    section = copy.copy(run)
+    section.revolved = None  # the revolved copy is the untrimmed part's
+    scene = (revolved_scene(section, grid, None, None, vtk) if run.axisymmetric
+             else extruded_scene(section, grid, None, None, vtk) if run.plane_strain
+             else mirrored_scene(section, grid, None, None, args.view, vtk))
+    window = PartWindow(scene, ["trimmed; view: " + args.view], args.view, run.section, vtk)
+    window.draw("thinning_percent", "thickness change (%)\nthinning +\nthickening −", args.range,
+                os.path.join(report, "trimmed-part.png"))
+    timing.lap("render", "trimmed-part.png")
 
 
 def springback_picture(run, args, report, vtk):

@@ -15,11 +15,14 @@ history.csv counts up to T). What report.md must say:
 - the FLD zone counts: those of run-summary.txt's columns_* (history.csv's
   at a travel) and of sheet.csv's zone column;
 - no -1 sentinel in the key table;
+- the trimmed and the sprung part's pictures where the run wrote
+  trimmed_*.pvtu or springback_*.pvtu;
 - every embedded PNG, the rendered ones included, is a PNG that is not
   blank (its pixels are not all one colour); report.html holds the same
   table rows and embeds the same pictures."""
 import base64
 import csv
+import glob
 import html
 import os
 import re
@@ -164,6 +167,10 @@ if os.path.exists(os.path.join(run, "sheet.csv")):
     if summary.get("model") != "axisymmetric":
         drawn = summary.get("end_reason", "").startswith("drawn through") and as_of is None
         expected.add("earing.png" if drawn else "draw-in.png")
+# The trimmed and the sprung part, drawn where the run wrote them.
+for pattern, picture in (("trimmed_*.pvtu", "trimmed-part.png"), ("springback_*.pvtu", "springback-part.png")):
+    if as_of is None and glob.glob(os.path.join(run, pattern)):
+        expected.add(picture)
 verdict("pictures in report.md", expected <= set(pictures), f"missing {sorted(expected - set(pictures))}")
 for p in pictures:
     path = os.path.join(report, p)
