@@ -47,6 +47,8 @@ RUNS = [
      {f"Tools/{t}/Friction coefficient": 0.07 for t in ("Punch", "Die", "Blank holder")}),
     ("Yld2004-18p, team 1, 3 layers", "earing-AA6016-yld2004-team1.prm",
      {"Mesh/Layers through thickness": 3}),
+    ("Yld2004-18p, team 1, planform refinements 4", "earing-AA6016-yld2004-team1.prm",
+     {"Mesh/Planform refinements": 4}),
 ]
 SECTIONS = (0, 45, 90)
 
