@@ -41,6 +41,8 @@ import math
 import os
 import sys
 
+import deck
+
 T, L, B = 0.78, 175.0, 35.0        # thickness, half length, width (mm)
 NX = int(sys.argv[1]) if len(sys.argv) > 1 else 256
 NY = int(sys.argv[2]) if len(sys.argv) > 2 else 2
@@ -53,41 +55,13 @@ out = []
 
 
 def node_id(i, j):
-    return 1 + j * (2 * NX + 1) + i
+    return deck.node_id(NX, i, j)
 
 
 out += ["*HEADING", "U-channel, plane strain half model (formsolve prm/channel.prm)", "*NODE, NSET=SHEETN"]
-for j in range(2 * NY + 1):
-    for i in range(2 * NX + 1):
-        if i % 2 == 0 or j % 2 == 0:
-            out.append(f"{node_id(i, j)}, {L * i / (2 * NX):.10g}, {T * j / (2 * NY):.10g}")
-sheet = []
-for jj in range(NY):
-    for ii in range(NX):
-        i, j = 2 * ii, 2 * jj
-        sheet.append((1 + jj * NX + ii, [node_id(i, j), node_id(i + 2, j), node_id(i + 2, j + 2), node_id(i, j + 2),
-                                          node_id(i + 1, j), node_id(i + 2, j + 1), node_id(i + 1, j + 2),
-                                          node_id(i, j + 1)]))
+sheet = deck.sheet(NX, NY, L, T, out)
 eid = len(sheet)
-
-
-def line(a, b, n):
-    return [(a[0] + (b[0] - a[0]) * k / n, a[1] + (b[1] - a[1]) * k / n) for k in range(n + 1)]
-
-
-def arc(cx, cy, r, a0, a1, n):
-    return [(cx + r * math.cos(a0 + (a1 - a0) * k / n), cy + r * math.sin(a0 + (a1 - a0) * k / n))
-            for k in range(n + 1)]
-
-
-def chain(*pieces):
-    pts = []
-    for p in pieces:
-        for q in p:
-            if not pts or math.dist(pts[-1], q) > 1e-9:
-                pts.append(q)
-    return pts
-
+line, arc, chain = deck.line, deck.arc, deck.chain
 
 # Tool profiles (x, y = formsolve's z), each with a point inside the tool.
 # The tools overlap the sheet by EPS so that contact is closed from the
@@ -100,74 +74,25 @@ tools = {
                   line((36, -5 + EPS), (36, -70), 50)), (60, -20)),
     "HOLDER": (line((41, T - EPS), (200, T - EPS), 200), (60, T + 20)),
 }
-next_node = 100000
-tool_elems, tool_faces, ref = {}, {}, {}
-for name, (prof, inside) in tools.items():
-    a, b = [], []
-    for k, p in enumerate(prof):
-        q0, q1 = prof[max(k - 1, 0)], prof[min(k + 1, len(prof) - 1)]
-        tx, ty = q1[0] - q0[0], q1[1] - q0[1]
-        le = math.hypot(tx, ty)
-        nx, ny = -ty / le, tx / le
-        # into the tool: towards its inside point for a flat, by continuity otherwise
-        if (inside[0] - p[0]) * nx + (inside[1] - p[1]) * ny < 0:
-            nx, ny = -nx, -ny
-        next_node += 1
-        a.append(next_node)
-        out.append(f"{next_node}, {p[0]:.10g}, {p[1]:.10g}")
-        next_node += 1
-        b.append(next_node)
-        out.append(f"{next_node}, {p[0] + nx:.10g}, {p[1] + ny:.10g}")
-    els, faces = [], []
-    for k in range(len(prof) - 1):
-        eid += 1
-        q = [a[k], a[k + 1], b[k + 1], b[k]]
-        pa, pb = prof[k], prof[k + 1]
-        # signed area of (a_k, a_k+1, b_k+1): positive keeps the order
-        xs = {a[k]: pa, a[k + 1]: pb}
-        d = (pb[0] - pa[0], pb[1] - pa[1])
-        # b_k+1 = pb + n; area sign = cross(d, n)
-        n = (inside[0] - pa[0], inside[1] - pa[1])
-        if d[0] * n[1] - d[1] * n[0] > 0:
-            els.append((eid, q))
-            faces.append((eid, "S1"))
-        else:
-            els.append((eid, [a[k], b[k], b[k + 1], a[k + 1]]))
-            faces.append((eid, "S4"))
-    tool_elems[name], tool_faces[name] = els, faces
-    ref[name] = a + b
+tool_elems, tool_faces, ref = deck.tool_bands(tools, eid, out)
 
 HM = ref["HOLDER"][0]
-out.append("*ELEMENT, TYPE=CPE8R, ELSET=SHEET")
-out += [f"{e}, " + ", ".join(map(str, n)) for e, n in sheet]
-for name, els in tool_elems.items():
-    out.append(f"*ELEMENT, TYPE=CPE4, ELSET={name}")
-    out += [f"{e}, " + ", ".join(map(str, n)) for e, n in els]
-for name in tools:
-    out += [f"*NSET, NSET={name}N"] + [str(n) for n in ref[name]]
+deck.elements_and_sets(out, sheet, "CPE8R", tool_elems, "CPE4", ref)
 out += ["*NSET, NSET=SYMM"] + [str(node_id(0, j)) for j in range(2 * NY + 1)]
 out += ["*NSET, NSET=MID"] + [str(node_id(i, NY)) for i in range(2 * NX + 1)]
 out += ["*NSET, NSET=CENTRE", str(node_id(0, NY))]
-# Surfaces: the sheet's bottom (S1) and top (S3) faces, the tools' faces.
-out += ["*SURFACE, NAME=SHEETTOP"] + [f"{e}, S3" for e, _ in sheet[-NX:]]
-out += ["*SURFACE, NAME=SHEETBOT"] + [f"{e}, S1" for e, _ in sheet[:NX]]
-for name, faces in tool_faces.items():
-    out += [f"*SURFACE, NAME={name}S"] + [f"{e}, {f}" for e, f in faces]
+deck.surfaces(out, sheet, NX, tool_faces)
 
 # Material: the channel's Swift curve on plastic strain (von Mises).
 out += ["*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {NU}", "*PLASTIC"]
-for k in range(41):
-    ep = 0 if k == 0 else 10 ** (-4 + 4.3 * (k - 1) / 39)   # 1e-4 .. 2
-    out.append(f"{565.32 * (0.007117 + ep) ** 0.2589:.6f}, {ep:.6g}")
+deck.swift_table(out, 565.32, 0.007117, 0.2589)
 out += ["*MATERIAL, NAME=RIGID", "*ELASTIC", "210000, 0.3"]
 out += ["*SOLID SECTION, ELSET=SHEET, MATERIAL=STEEL", f"{B}"]
 for name in tools:
     out += [f"*SOLID SECTION, ELSET={name}, MATERIAL=RIGID", f"{B}"]
 
 if HOLDER_FORCE:
-    out += ["*EQUATION"]
-    for n in ref["HOLDER"][1:]:
-        out += ["2", f"{n}, 2, 1., {HM}, 2, -1."]
+    deck.tie_in_y(out, ref["HOLDER"])
 out += ["*SURFACE INTERACTION, NAME=TOOLS", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR",
         f"{K}, 1e-3, 1e-3", "*FRICTION", f"{MU}, {LAM}"]
 for slave, master in [("SHEETTOP", "PUNCHS"), ("SHEETBOT", "DIES"), ("SHEETTOP", "HOLDERS")]:
