@@ -3,7 +3,7 @@
 # and released (issue 63 section 5; doc/calculix.md): formsolve's
 # axisymmetric section at 5 and 7 planform refinements, CalculiX's (the
 # deck of cup_deck.py) with 96 x 2 and, unless FINE=0, 192 x 4 CAX8R
-# elements (about an hour on one core). Writes doc/calculix-cup.csv and
+# elements (about 10 minutes more on one core). Writes doc/calculix-cup.csv and
 # doc/calculix-cup.png; runs are kept in results/calculix-cup/ and reused
 # unless --force. CalculiX comes from Debian (calculix-ccx), installed here:
 # a benchmark's peer, not a dependency of formsolve.
