@@ -45,11 +45,11 @@ namespace bent_strip
 
   /// Forming element, layers, refinements; the release's degree (0: the
   /// forming's), the bound on the curvature's relative error and on a
-  /// cell's residual stress error (over s').
+  /// cell's residual stress error (over s') along and across the strip.
   struct Variant
   {
     unsigned int degree, layers, refinements, release;
-    double       bound, residual_bound = 1;
+    double       bound, residual_bound = 1, across_bound = 1;
   };
 
   parameters::Run strip(const double r, const Variant &v)
