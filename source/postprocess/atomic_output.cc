@@ -37,21 +37,45 @@ namespace formsolve
                                      const unsigned int step,
                                      const MPI_Comm     comm)
     {
+      return write_vtu_atomically(
+        out,
+        1,
+        [](unsigned int) {},
+        directory,
+        base,
+        step,
+        comm);
+    }
+
+    template <int dim, int spacedim>
+    std::string
+    write_vtu_atomically(const DataOutInterface<dim, spacedim>   &out,
+                         const unsigned int                       n_pieces,
+                         const std::function<void(unsigned int)> &make,
+                         const std::string                       &directory,
+                         const std::string                       &base,
+                         const unsigned int                       step,
+                         const MPI_Comm                           comm)
+    {
       const unsigned int rank  = Utilities::MPI::this_mpi_process(comm),
                          ranks = Utilities::MPI::n_mpi_processes(comm);
       const std::string  stem  = base + "_" + Utilities::int_to_string(step, 5);
       const unsigned int digits =
-        Utilities::needed_digits(std::max(ranks, 2u) - 1);
-      auto piece = [&](const unsigned int r) {
-        return stem + "." + Utilities::int_to_string(r, digits) + ".vtu";
+        Utilities::needed_digits(std::max(ranks * n_pieces, 2u) - 1);
+      auto piece = [&](const unsigned int p) {
+        return stem + "." + Utilities::int_to_string(p, digits) + ".vtu";
       };
       // A failed write on one rank must not leave the others waiting: the
       // outcome is agreed on before the record is written.
       int ok = 1;
       try
         {
-          write_atomically(directory + "/" + piece(rank),
-                           [&](std::ostream &f) { out.write_vtu(f); });
+          for (unsigned int k = 0; k < n_pieces; ++k)
+            {
+              make(k);
+              write_atomically(directory + "/" + piece(rank * n_pieces + k),
+                               [&](std::ostream &f) { out.write_vtu(f); });
+            }
         }
       catch (...)
         {
@@ -64,8 +88,8 @@ namespace formsolve
       if (rank == 0)
         {
           std::vector<std::string> pieces;
-          for (unsigned int r = 0; r < ranks; ++r)
-            pieces.push_back(piece(r));
+          for (unsigned int p = 0; p < ranks * n_pieces; ++p)
+            pieces.push_back(piece(p));
           write_atomically(directory + "/" + record, [&](std::ostream &f) {
             out.write_pvtu_record(f, pieces);
           });
@@ -83,5 +107,13 @@ namespace formsolve
                                               const std::string &,
                                               unsigned int,
                                               MPI_Comm);
+    template std::string
+    write_vtu_atomically(const DataOutInterface<3, 3> &,
+                         unsigned int,
+                         const std::function<void(unsigned int)> &,
+                         const std::string &,
+                         const std::string &,
+                         unsigned int,
+                         MPI_Comm);
   } // namespace postprocess
 } // namespace formsolve

@@ -30,5 +30,18 @@ namespace formsolve
                          const std::string &base,
                          const unsigned int step,
                          const MPI_Comm     comm);
+
+    /// The same with each rank's part in @p n_pieces pieces, one at a time
+    /// in memory: @p make(k) turns @p out into piece k before it is written.
+    /// The pieces are <base>_<step>.<rank n_pieces + k>.vtu.
+    template <int dim, int spacedim>
+    std::string
+    write_vtu_atomically(const dealii::DataOutInterface<dim, spacedim> &out,
+                         const unsigned int                       n_pieces,
+                         const std::function<void(unsigned int)> &make,
+                         const std::string                       &directory,
+                         const std::string                       &base,
+                         const unsigned int                       step,
+                         const MPI_Comm                           comm);
   } // namespace postprocess
 } // namespace formsolve
