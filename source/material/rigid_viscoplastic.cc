@@ -86,7 +86,9 @@ namespace formsolve
       out.deviatoric_stress /= lambda;
       out.beta /= lambda * lambda;
       out.beta_plastic /= lambda * lambda;
-      out.metric           = (lambda * 1.5) * d.compliance;
+      for (unsigned int r = 0; r < 6; ++r)
+        for (unsigned int c = 0; c < 6; ++c)
+          out.metric[r][c] = (lambda * 1.5) * d.compliance[r][c];
       out.local_iterations = d.iterations;
       return out;
     }
@@ -162,7 +164,8 @@ namespace formsolve
     {
       const SymmetricTensor<2, 3> &e = m.strain_rate_deviator;
       SymmetricTensor<4, 3>        C =
-        2. * m.viscosity * (yld ? m.metric : deviator_tensor<3>()) +
+        2. * m.viscosity *
+          (yld ? from_mandel(m.metric) : deviator_tensor<3>()) +
         (m.beta - m.beta_plastic) * outer_product(e, e);
       if (m.beta_plastic != 0)
         C += 0.5 * m.beta_plastic *
@@ -174,8 +177,19 @@ namespace formsolve
                                          const SymmetricTensor<2, 3> &w_rate,
                                          const Mandel6x6             &map) const
     {
-      return multiply_transpose(multiply(map, to_mandel(tangent(m, w_rate))),
-                                map);
+      // The general form in Mandel's notation, then M C M^T.
+      static const Mandel6x6 dev = to_mandel(deviator_tensor<3>());
+      const Mandel6x6       &P   = yld ? m.metric : dev;
+      const Mandel6          e   = to_mandel(m.strain_rate_deviator),
+                    w            = to_mandel(w_rate);
+      const double mu2 = 2. * m.viscosity, b = m.beta - m.beta_plastic,
+                   bp = 0.5 * m.beta_plastic;
+      Mandel6x6 C;
+      for (unsigned int r = 0; r < 6; ++r)
+        for (unsigned int c = 0; c < 6; ++c)
+          C[r][c] =
+            mu2 * P[r][c] + b * e[r] * e[c] + bp * (e[r] * w[c] + w[r] * e[c]);
+      return multiply_transpose(multiply(map, C), map);
     }
 
     std::string RigidViscoplastic::criterion_summary() const

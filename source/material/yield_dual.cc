@@ -2,6 +2,9 @@
 
 #include <formsolve/material/yield_dual.h>
 
+#include <Eigen/Dense>
+
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -21,15 +24,49 @@ namespace formsolve
 
     namespace
     {
-      /// (H + P_h)^-1 - P_h with P_h = I (x) I / 3: the inverse of H on
-      /// deviators, H having the identity in its null space.
-      SymmetricTensor<4, 3> deviatoric_inverse(const SymmetricTensor<4, 3> &H)
+      using Matrix6 = Eigen::Matrix<double, 6, 6>;
+      using Vector6 = Eigen::Matrix<double, 6, 1>;
+
+      double dot(const Mandel6 &a, const Mandel6 &b)
       {
-        static const SymmetricTensor<4, 3> Ph =
-          outer_product(unit_symmetric_tensor<3>(),
-                        unit_symmetric_tensor<3>()) /
-          3.;
-        return invert(H + Ph) - Ph;
+        double d = 0;
+        for (unsigned int r = 0; r < 6; ++r)
+          d += a[r] * b[r];
+        return d;
+      }
+
+      /// H + P_h, P_h = I (x) I / 3 in Mandel's notation: positive definite
+      /// for a strictly convex g, whose Hessian has the identity in its null
+      /// space.
+      Matrix6 completed(const Mandel6x6 &H)
+      {
+        Matrix6 A;
+        for (unsigned int r = 0; r < 6; ++r)
+          for (unsigned int c = 0; c < 6; ++c)
+            A(r, c) = H[r][c] + (r < 3 && c < 3 ? 1. / 3. : 0.);
+        return A;
+      }
+
+      /// (H + P_h)^-1 B by Cholesky; by LDL^T where rounding leaves H + P_h
+      /// not quite positive definite (a nearly flat surface).
+      template <typename Rhs>
+      auto completed_solve(const Mandel6x6 &H, const Rhs &B)
+      {
+        const Matrix6 A = completed(H);
+        const auto    c = A.llt();
+        return c.info() == Eigen::Success ? Rhs(c.solve(B))
+                                          : Rhs(A.ldlt().solve(B));
+      }
+
+      /// (H + P_h)^-1 - P_h: the inverse of H on deviators.
+      Mandel6x6 deviatoric_inverse(const Mandel6x6 &H)
+      {
+        const Matrix6 inverse = completed_solve(H, Matrix6::Identity().eval());
+        Mandel6x6     C;
+        for (unsigned int r = 0; r < 6; ++r)
+          for (unsigned int c = 0; c < 6; ++c)
+            C[r][c] = inverse(r, c) - (r < 3 && c < 3 ? 1. / 3. : 0.);
+        return C;
       }
 
       [[noreturn]] void fail(const SymmetricTensor<2, 3> &e,
@@ -45,6 +82,23 @@ namespace formsolve
         AssertThrow(false, ExcMessage(m.str()));
         throw;
       }
+
+      /// The Newton step -(H + P_h)^-1 r on deviators (r is one), no
+      /// longer than @p s: where the surface is nearly flat (large
+      /// exponents, a start on a flat face) the step is huge.
+      Mandel6
+      newton_step(const Mandel6x6 &H, const Mandel6 &r, const Mandel6 &s)
+      {
+        Vector6 b;
+        for (unsigned int k = 0; k < 6; ++k)
+          b(k) = -r[k];
+        const Vector6 x      = completed_solve(H, b);
+        const double  factor = std::min(1., std::sqrt(dot(s, s)) / x.norm());
+        Mandel6       step;
+        for (unsigned int k = 0; k < 6; ++k)
+          step[k] = factor * x(k);
+        return step;
+      }
     } // namespace
 
     DualPoint solve_dual(const Yld2004               &f,
@@ -56,38 +110,37 @@ namespace formsolve
       const double                n  = e0.norm();
       if (n == 0)
         {
-          out.compliance = deviatoric_inverse(f.half_square(e0).hessian);
+          out.compliance = deviatoric_inverse(f.half_square(Mandel6{}).hessian);
           return out;
         }
-      // Homogeneity: solve for the unit rate, scale s by n at the end.
-      const SymmetricTensor<2, 3> e = e0 / n;
+      // Homogeneity: solve for the unit rate, scale s by n at the end. All
+      // in Mandel's notation, whose dot product is the tensors'.
+      const Mandel6 e = to_mandel(e0 / n);
       // The start's direction (von Mises's without one) at the multiple t
       // minimising t^2 g - t s:e; a start against e is no start.
-      SymmetricTensor<2, 3> s = (2. / 3.) * e;
-      if (start && deviator(*start) * e > 0)
-        s = deviator(*start);
+      Mandel6 s = to_mandel((2. / 3.) * (e0 / n));
+      if (start && deviator(*start) * e0 > 0)
+        s = to_mandel(deviator(*start));
       // g is of degree 2: scaling s by t scales g by t^2, its gradient by
       // t and leaves its Hessian.
       auto         g = f.half_square(s);
-      const double t = (s * e) / (2 * g.value);
-      s *= t;
+      const double t = dot(s, e) / (2 * g.value);
+      for (unsigned int k = 0; k < 6; ++k)
+        s[k] *= t, g.gradient[k] *= t;
       g.value *= t * t;
-      g.gradient *= t;
-      double       objective = g.value - s * e;
+      double       objective = g.value - dot(s, e);
       unsigned int it        = 0;
       for (;; ++it)
         {
-          const SymmetricTensor<2, 3> r    = g.gradient - e;
-          const double                norm = r.norm();
+          Mandel6 r;
+          for (unsigned int k = 0; k < 6; ++k)
+            r[k] = g.gradient[k] - e[k];
+          const double norm = std::sqrt(dot(r, r));
           if (norm <= 1e-13)
             break;
           if (it == 50)
             fail(e0, norm);
-          SymmetricTensor<2, 3> step = -(deviatoric_inverse(g.hessian) * r);
-          // Where the surface is nearly flat (large exponents, a start on a
-          // flat face) the Newton step is huge: no longer than s itself.
-          if (step.norm() > s.norm())
-            step *= s.norm() / step.norm();
+          const Mandel6 step = newton_step(g.hessian, r, s);
           // Backtracking on the convex objective g(s) - s : e; near the
           // solution its decrease (residual squared) drowns in rounding,
           // and a smaller residual accepts the step instead.
@@ -95,13 +148,19 @@ namespace formsolve
           bool   accepted = false;
           for (unsigned int k = 0; k < 30 && !accepted; ++k, alpha *= 0.5)
             {
-              const auto   trial = f.half_square(s + alpha * step);
-              const double value = trial.value - (s + alpha * step) * e;
-              accepted = value <= objective + 1e-4 * alpha * (r * step) ||
-                         (trial.gradient - e).norm() < 0.5 * norm;
+              Mandel6 x = s;
+              for (unsigned int j = 0; j < 6; ++j)
+                x[j] += alpha * step[j];
+              const auto   trial = f.half_square(x);
+              const double value = trial.value - dot(x, e);
+              Mandel6      rt;
+              for (unsigned int j = 0; j < 6; ++j)
+                rt[j] = trial.gradient[j] - e[j];
+              accepted = value <= objective + 1e-4 * alpha * dot(r, step) ||
+                         std::sqrt(dot(rt, rt)) < 0.5 * norm;
               if (accepted)
                 {
-                  s += alpha * step;
+                  s         = x;
                   g         = trial;
                   objective = value;
                 }
@@ -114,7 +173,7 @@ namespace formsolve
             fail(e0, norm);
         }
       out.iterations = it;
-      out.stress     = n * s;
+      out.stress     = n * from_mandel(s);
       out.rate       = n * std::sqrt(2 * g.value);
       out.compliance = deviatoric_inverse(g.hessian);
       return out;

@@ -53,11 +53,11 @@ namespace formsolve
       // stress-velocity linearisation: the equivalent strain rate
       // (piecewise law), sqrt(rate^2 + cutoff^2) (smooth law).
       double dual_rate = 0;
-      // The non-quadratic law's lambda 3/2 (grad^2 g)^+ (unset for von
-      // Mises and Hill48, whose tangent takes P_dev), and the local Newton
-      // iterations it took.
-      SymmetricTensor<4, 3> metric;
-      unsigned int          local_iterations = 0;
+      // The non-quadratic law's lambda 3/2 (grad^2 g)^+ in Mandel's
+      // notation (unset for von Mises and Hill48, whose tangent takes
+      // P_dev), and the local Newton iterations it took.
+      Mandel6x6    metric{};
+      unsigned int local_iterations = 0;
     };
 
     class RigidViscoplastic

@@ -20,9 +20,10 @@ namespace formsolve
     {
       SymmetricTensor<2, 3> stress;   // s: grad g(s) = D'
       double                rate = 0; // sigma_bar(s) = eps_bar_dot
-      // ds/dD' = (grad^2 g)^+, the pseudo-inverse on deviators.
-      SymmetricTensor<4, 3> compliance;
-      unsigned int          iterations = 0;
+      // ds/dD' = (grad^2 g)^+, the pseudo-inverse on deviators, in
+      // Mandel's notation.
+      Mandel6x6    compliance{};
+      unsigned int iterations = 0;
     };
 
     /// Counts of the local solves of this process (the run summary's

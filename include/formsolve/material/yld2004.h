@@ -56,6 +56,14 @@ namespace formsolve
         SymmetricTensor<4, 3> hessian;
       };
       HalfSquare half_square(const SymmetricTensor<2, 3> &sigma) const;
+      /// The same in Mandel's notation (the local solve's own).
+      struct HalfSquareMandel
+      {
+        double    value;
+        Mandel6   gradient;
+        Mandel6x6 hessian;
+      };
+      HalfSquareMandel half_square(const Mandel6 &sigma) const;
 
       /// Uniaxial flow stress at @p angle (radians) to RD over RD's.
       double stress_ratio(const double angle) const;
