@@ -191,53 +191,55 @@ namespace formsolve
         *matrix = 0;
       residual = 0;
 
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            points.reinit(cell, v);
-            r            = 0;
-            const auto h = history.get_data(cell);
-            for (unsigned int q = 0; q < kf.n_points(); ++q)
-              {
-                const auto m = material.evaluate(
-                  points.rate(q),
-                  h[q]->strain,
-                  dt,
-                  newton,
-                  points.map(q),
-                  dual ? dual->start(cell->active_cell_index(), q) : nullptr);
-                const double dV = kf.dV(q);
-                kf.shape_strains(q, B);
-                add_point(material,
-                          m,
-                          dual ? dual_rate(*dual, material, m, cell, q)
-                               : m.strain_rate_deviator,
-                          dual != nullptr,
-                          points.map(q),
-                          q,
-                          dV,
-                          B,
-                          matrix ? (product_form ? 1 : 2) : 0,
-                          tangent,
-                          r,
-                          s,
-                          u);
-              }
-            state::volumetric_rates(kr, v, dt, h[0]->volume_offset, Dr, div_v);
-            add_volumetric(kr, div_v, Kv, matrix != nullptr, B, tr, tangent, r);
-            if (matrix)
-              tangent.finish(K);
-            f_int2 += r.norm_sqr();
-            cell->get_dof_indices(dofs);
-            add_cell(cell->active_cell_index(),
-                     K,
-                     r,
-                     dofs,
-                     constraints,
-                     matrix,
-                     residual,
-                     scatter);
-          }
+      points.for_each_owned(
+        dof_handler,
+        v,
+        history,
+        [&](const auto &cell, const auto &h) {
+          r = 0;
+          for (unsigned int q = 0; q < kf.n_points(); ++q)
+            {
+              const auto m =
+                material.evaluate(points.rate(q),
+                                  h[q]->strain,
+                                  dt,
+                                  newton,
+                                  points.map(q),
+                                  dual
+                                    ? dual->start(cell->active_cell_index(), q)
+                                    : nullptr);
+              const double dV = kf.dV(q);
+              kf.shape_strains(q, B);
+              add_point(material,
+                        m,
+                        dual ? dual_rate(*dual, material, m, cell, q)
+                             : m.strain_rate_deviator,
+                        dual != nullptr,
+                        points.map(q),
+                        q,
+                        dV,
+                        B,
+                        matrix ? (product_form ? 1 : 2) : 0,
+                        tangent,
+                        r,
+                        s,
+                        u);
+            }
+          state::volumetric_rates(kr, v, dt, h[0]->volume_offset, Dr, div_v);
+          add_volumetric(kr, div_v, Kv, matrix != nullptr, B, tr, tangent, r);
+          if (matrix)
+            tangent.finish(K);
+          f_int2 += r.norm_sqr();
+          cell->get_dof_indices(dofs);
+          add_cell(cell->active_cell_index(),
+                   K,
+                   r,
+                   dofs,
+                   constraints,
+                   matrix,
+                   residual,
+                   scatter);
+        });
 
       if (matrix)
         matrix->compress(VectorOperation::add);

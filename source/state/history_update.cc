@@ -99,24 +99,24 @@ namespace formsolve
           projection.project(dof_handler, kf, cell_means, v);
         }
 
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            points.reinit(cell, v);
-            auto h = history.get_data(cell);
-            point_means.assign(
-              kf.n_points(),
-              cell_pressure(kr, v, dt, h[0]->volume_offset, Kv, Dr, div_v));
-            if (projected)
-              projection.values(kf.fe_values(), point_means);
-            for (unsigned int q = 0; q < kf.n_points(); ++q)
-              update_point(kf.mapped_axis(q, dim - 1),
-                           points.rate(q),
-                           point_means[q],
-                           points.map(q),
-                           dt,
-                           *h[q]);
-          }
+      points.for_each_owned(
+        dof_handler,
+        v,
+        history,
+        [&](const auto &, const auto &h) {
+          point_means.assign(
+            kf.n_points(),
+            cell_pressure(kr, v, dt, h[0]->volume_offset, Kv, Dr, div_v));
+          if (projected)
+            projection.values(kf.fe_values(), point_means);
+          for (unsigned int q = 0; q < kf.n_points(); ++q)
+            update_point(kf.mapped_axis(q, dim - 1),
+                         points.rate(q),
+                         point_means[q],
+                         points.map(q),
+                         dt,
+                         *h[q]);
+        });
     }
 
     template <int dim>

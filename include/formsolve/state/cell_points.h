@@ -39,6 +39,23 @@ namespace formsolve
       void reinit(const CellIterator                          &cell,
                   const dealii::TrilinosWrappers::MPI::Vector &v);
 
+      /// The one cell loop of the assembly and the history update: on each
+      /// locally owned cell, reinit(cell, v), then @p work(cell, h) with h
+      /// the cell's point histories in @p history.
+      template <class History, class Work>
+      void for_each_owned(const dealii::DoFHandler<dim>               &dofs,
+                          const dealii::TrilinosWrappers::MPI::Vector &v,
+                          History                                     &history,
+                          const Work                                  &work)
+      {
+        for (const auto &cell : dofs.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              reinit(cell, v);
+              work(cell, history.get_data(cell));
+            }
+      }
+
       model::CellKinematics<dim> &full() { return kf; }
       model::CellKinematics<dim> &reduced() { return kr; }
       /// The rate of deformation at full point q.
