@@ -7,6 +7,7 @@
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Face_filtered_graph.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -112,6 +113,11 @@ namespace formsolve
       std::ostringstream s;
       if (degenerate > 0)
         s << file << ": " << degenerate << " triangles without area left out. ";
+      if (joined > 0)
+        s << file << ": " << joined
+          << " vertices at the position of another joined to it. ";
+      if (repeated > 0)
+        s << file << ": " << repeated << " triangles given twice left out. ";
       if (turned > 0)
         s << file << ": " << turned
           << " triangles turned to agree with their neighbours. ";
@@ -146,6 +152,15 @@ namespace formsolve
       SoupPolygons polygons;
       for (const auto &t : m.triangles)
         polygons.push_back({t[0], t[1], t[2]});
+      report.joined =
+        PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
+      report.repeated =
+        PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
+      PMP::remove_isolated_points_in_polygon_soup(points, polygons);
+      m.vertices.clear();
+      for (const auto &p : points)
+        m.vertices.emplace_back(p.x(), p.y(), p.z());
+      m.triangles.resize(polygons.size());
       Seen seen;
       seen.reversed.assign(polygons.size(), false);
       Watch watch;

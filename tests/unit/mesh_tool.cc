@@ -1,7 +1,8 @@
 // Meshed tools beyond the facets. The smooth surface (Phong, doc/theory.md
 // eq. 7b) against a sphere and a cylinder, with a cube's sharp edges kept
 // exact; orientation made to agree (turned triangles and inside-out parts
-// counted; three triangles on an edge and a Moebius strip refused); the
+// counted; triangles given twice left out and coincident vertices joined;
+// three triangles on an edge and a Moebius strip refused); the
 // working side of an open surface taken from the sheet, and a surface the
 // sheet cannot see refused; the bending region found from the curvature;
 // gmsh's readers (.msh with quadrilaterals, .geo and STEP meshed at a facet
@@ -179,6 +180,29 @@ namespace
                                  patch.vertices[patch.triangles[2][2]] -
                                    patch.vertices[patch.triangles[2][0]])[2] >
                   0,
+                1,
+                0);
+
+    // A cube as exporters write it: one triangle twice, one twice with
+    // the other orientation, one corner given again as a vertex of its own.
+    SurfaceMesh repeated = cube();
+    repeated.triangles.push_back(repeated.triangles[3]);
+    repeated.triangles.push_back({{repeated.triangles[5][0],
+                                   repeated.triangles[5][2],
+                                   repeated.triangles[5][1]}});
+    repeated.vertices.push_back(repeated.vertices[repeated.triangles[0][0]]);
+    repeated.triangles[0][0] = repeated.vertices.size() - 1;
+    r                        = orient(repeated, "repeated.stl");
+    test::close("repeated triangles left out", r.repeated, 2, 0);
+    test::close("... the corner joined", r.joined, 1, 0);
+    test::close("... a closed cube again: 12 triangles, 8 vertices",
+                repeated.triangles.size() + repeated.vertices.size(),
+                20,
+                0);
+    test::close("... volume", volume(repeated), 1, 1e-14);
+    test::close("... said",
+                r.describe("repeated.stl").find("2 triangles given twice") !=
+                  std::string::npos,
                 1,
                 0);
 
