@@ -98,6 +98,7 @@ namespace formsolve
                 const CellIterator                &cell,
                 const unsigned int                 q)
       {
+        dual.trial_metric(cell->active_cell_index(), q, m.metric);
         return dual.trial(cell->active_cell_index(),
                           q,
                           m.strain_rate_deviator,
@@ -148,18 +149,19 @@ namespace formsolve
     {}
 
     template <int dim>
-    double
-    Assembler<dim>::assemble_body(const DoFHandler<dim>           &dof_handler,
-                                  const Mapping<dim>              &mapping,
-                                  const AffineConstraints<double> &constraints,
-                                  const VectorType                &v,
-                                  const HistoryStorage<dim>       &history,
-                                  const double                     dt,
-                                  const bool                       newton,
-                                  MatrixType                      *matrix,
-                                  VectorType                      &residual,
-                                  DualStress                      *dual,
-                                  const CellScatter<dim> *scatter) const
+    double Assembler<dim>::assemble_body(
+      const DoFHandler<dim>            &dof_handler,
+      const Mapping<dim>               &mapping,
+      const AffineConstraints<double>  &constraints,
+      const VectorType                 &v,
+      const HistoryStorage<dim>        &history,
+      const double                      dt,
+      const bool                        newton,
+      MatrixType                       *matrix,
+      VectorType                       &residual,
+      DualStress                       *dual,
+      const CellScatter<dim>           *scatter,
+      const material::PointFrames<dim> *frames) const
     {
       const auto            &fe = dof_handler.get_fe();
       const unsigned int     n  = fe.n_dofs_per_cell();
@@ -170,7 +172,8 @@ namespace formsolve
                                     fe,
                                     full,
                                     reduced,
-                                    update_default);
+                                    update_default,
+                                    frames);
       CellKinematics<dim>   &kf = points.full();
       CellKinematics<dim>   &kr = points.reduced();
 

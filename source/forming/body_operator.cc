@@ -21,6 +21,7 @@ namespace formsolve
     {
       scatter = CellScatter<dim>();
       dual    = DualStress();
+      frames  = material::PointFrames<dim>();
     }
 
     template <int dim>
@@ -29,7 +30,9 @@ namespace formsolve
     {
       scatter.reinit(state.dof_handler, state.constraints, matrix);
       dual.reinit(state.dof_handler.get_triangulation().n_active_cells(),
-                  assembler.quadrature().size());
+                  assembler.quadrature().size(),
+                  assembler.law().non_quadratic() != nullptr);
+      frames.clear();
     }
 
     template <int dim>
@@ -42,6 +45,14 @@ namespace formsolve
     {
       if (kind == Linearisation::exact)
         dual.restart(assembler.cutoff_rate(), assembler.smooth_rigid_zone());
+      // The mesh stands still within a step: its frames once.
+      if (!frames.ready())
+        frames.compute(assembler.law(),
+                       state.kinematics,
+                       state.dof_handler,
+                       *state.mapping,
+                       state.reference_mapping,
+                       assembler.quadrature());
       return assembler.assemble_body(state.dof_handler,
                                      *state.mapping,
                                      state.constraints,
@@ -54,7 +65,8 @@ namespace formsolve
                                      use_dual && kind != Linearisation::exact
                                        ? &dual
                                        : nullptr,
-                                     &scatter);
+                                     &scatter,
+                                     &frames);
     }
 
     template <int dim>

@@ -10,18 +10,22 @@ namespace formsolve
   namespace solver
   {
     void DualStress::reinit(const unsigned int n_cells,
-                            const unsigned int n_points)
+                            const unsigned int n_points,
+                            const bool         keep_metrics)
     {
       points = n_points;
       accepted.assign(n_cells * n_points, PointState());
       trials = accepted;
+      metrics.assign(keep_metrics ? n_cells * n_points : 0, MetricState());
+      trial_metrics = metrics;
     }
 
     void DualStress::reset()
     {
       for (auto &p : accepted)
         p.valid = false;
-      trials = accepted;
+      trials        = accepted;
+      trial_metrics = metrics;
     }
 
     void DualStress::restart(const double cutoff, const bool smooth)
@@ -33,7 +37,8 @@ namespace formsolve
             p.w               = p.e /
                   (smooth ? std::hypot(rate, cutoff) : std::max(rate, cutoff));
           }
-      trials = accepted;
+      trials        = accepted;
+      trial_metrics = metrics;
     }
 
     std::array<unsigned int, 3>

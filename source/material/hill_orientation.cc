@@ -5,6 +5,8 @@ namespace formsolve
 {
   namespace material
   {
+    using dealii::Tensor;
+
     template <int dim>
     HillOrientation<dim>::HillOrientation(const RigidViscoplastic &material)
         : material(material)
@@ -23,6 +25,18 @@ namespace formsolve
           frames[q] = initial(k.deformation_gradient(q));
           maps[q]   = material.hill_map(frames[q]);
         }
+    }
+
+    template <int dim>
+    void HillOrientation<dim>::reinit(const Tensor<2, 3> *cell_frames,
+                                      const unsigned int  n_points)
+    {
+      if (material.isotropic())
+        return;
+      frames.assign(cell_frames, cell_frames + n_points);
+      maps.resize(n_points);
+      for (unsigned int q = 0; q < n_points; ++q)
+        maps[q] = material.hill_map(frames[q]);
     }
 
 #define INSTANTIATE(dim) template class HillOrientation<dim>;

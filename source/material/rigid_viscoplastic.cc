@@ -39,13 +39,12 @@ namespace formsolve
                            newton);
     }
 
-    PointResponse
-    RigidViscoplastic::evaluate(const SymmetricTensor<2, 3> &D,
-                                const double                 strain_old,
-                                const double                 dt,
-                                const bool                   newton,
-                                const Mandel6x6             &map,
-                                const SymmetricTensor<2, 3> *start) const
+    PointResponse RigidViscoplastic::evaluate(const SymmetricTensor<2, 3> &D,
+                                              const double     strain_old,
+                                              const double     dt,
+                                              const bool       newton,
+                                              const Mandel6x6 &map,
+                                              const Mandel6x6 *start) const
     {
       // S annihilates the identity: no deviator needed (the rotation of a
       // non-quadratic law keeps the trace, its deviator is taken).
@@ -69,14 +68,20 @@ namespace formsolve
                                     const double                 strain_old,
                                     const double                 dt,
                                     const bool                   newton,
-                                    const SymmetricTensor<2, 3> *start) const
+                                    const Mandel6x6             *start) const
     {
       // s from grad g(s) = e (eq. 3e), then the von Mises law of the
       // pseudo-rate lambda 3/2 s whose von Mises rate is sigma_bar(s): its
       // stress 2 mu (lambda 3/2 s) is lambda times the law's, its beta
       // lambda^2 times (both multiply e (x) e), and 2 mu P_dev becomes 2 mu
       // lambda 3/2 (grad^2 g)^+ (doc/theory.md, eq. 3f).
-      const DualPoint d = solve_dual(*yld, e, start);
+      // The earlier iterate's compliance C (metric = C up to a factor that
+      // the solve's scaling of its start removes): its s_k = C e_k, and
+      // s_k + C (e - e_k) = C e (doc/theory.md, section 3b).
+      SymmetricTensor<2, 3> guess;
+      if (start)
+        guess = from_mandel(multiply(*start, to_mandel(e)));
+      const DualPoint d = solve_dual(*yld, e, start ? &guess : nullptr);
       statistics.add(d.iterations);
       const double  vm     = std::sqrt(1.5 * (d.stress * d.stress));
       const double  lambda = vm > 0 ? d.rate / vm : 1;

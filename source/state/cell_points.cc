@@ -15,14 +15,16 @@ namespace formsolve
                                 const FiniteElement<dim> &fe,
                                 const Quadrature<dim>    &full,
                                 const Quadrature<dim>    &reduced,
-                                const UpdateFlags         extra)
+                                const UpdateFlags         extra,
+                                const material::PointFrames<dim> *frames)
         : frame(material)
+        , cached(frames)
         , kf(kinematics,
              mapping,
              fe,
              full,
-             extra | frame.update_flags(),
-             frame.needs_reference() ? &reference_mapping : nullptr)
+             frames ? extra : extra | frame.update_flags(),
+             frame.needs_reference() && !frames ? &reference_mapping : nullptr)
         , kr(kinematics,
              mapping,
              fe,
@@ -37,7 +39,10 @@ namespace formsolve
     {
       kf.reinit(cell);
       kr.reinit(cell);
-      frame.reinit(kf);
+      if (cached)
+        frame.reinit(cached->cell(cell->active_cell_index()), kf.n_points());
+      else
+        frame.reinit(kf);
       kf.rates(v, D);
     }
 

@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <formsolve/forming/dual_stress.h>
+#include <formsolve/material/point_frames.h>
 #include <formsolve/material/rigid_viscoplastic.h>
 #include <formsolve/model/kinematics.h>
 #include <formsolve/state/quadrature_history.h>
@@ -41,19 +42,22 @@ namespace formsolve
       /// residual are zeroed first and compressed at the end. With @p dual,
       /// the Newton tangent is the stress-velocity one (dual_stress.h), and
       /// the dual directions of this iterate are kept as its trial values.
-      /// Returns the norm of the element internal-force vectors, a scale for
-      /// |r|.
-      double assemble_body(const dealii::DoFHandler<dim>           &dof_handler,
-                           const dealii::Mapping<dim>              &mapping,
-                           const dealii::AffineConstraints<double> &constraints,
-                           const VectorType                        &v,
-                           const HistoryStorage<dim>               &history,
-                           const double                             dt,
-                           const bool                               newton,
-                           MatrixType                              *matrix,
-                           VectorType                              &residual,
-                           DualStress             *dual    = nullptr,
-                           const CellScatter<dim> *scatter = nullptr) const;
+      /// With @p frames, the point frames of this configuration at
+      /// quadrature() are read from it. Returns the norm of the element
+      /// internal-force vectors, a scale for |r|.
+      double
+      assemble_body(const dealii::DoFHandler<dim>           &dof_handler,
+                    const dealii::Mapping<dim>              &mapping,
+                    const dealii::AffineConstraints<double> &constraints,
+                    const VectorType                        &v,
+                    const HistoryStorage<dim>               &history,
+                    const double                             dt,
+                    const bool                               newton,
+                    MatrixType                              *matrix,
+                    VectorType                              &residual,
+                    DualStress                              *dual    = nullptr,
+                    const CellScatter<dim>                  *scatter = nullptr,
+                    const material::PointFrames<dim> *frames = nullptr) const;
 
       /// Assemble the deviatoric tangent through the material's general
       /// 6x6 tangent even where it has the isotropic form (tests: both give

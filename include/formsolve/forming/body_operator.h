@@ -33,7 +33,11 @@ namespace formsolve
       /// A step begins from the secant tangent: the last step's
       /// linearisation point lies in another configuration (and a resumed
       /// run must iterate as the uninterrupted one).
-      void begin_step() { dual.reset(); }
+      void begin_step()
+      {
+        dual.reset();
+        frames.clear();
+      }
 
       /// The body residual r_b at the ghosted velocity @p v (and its tangent
       /// K_b into @p matrix if not null), in the state's current
@@ -70,6 +74,7 @@ namespace formsolve
       const bool                  use_dual;
       CellScatter<dim>            scatter; // positions of cell tangents
       DualStress                  dual;
+      material::PointFrames<dim>  frames; // of the step's configuration
       std::array<unsigned int, 3> counts{{0, 0, 0}};
     };
   } // namespace solver

@@ -11,6 +11,8 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <formsolve/material/mandel.h>
+
 #include <array>
 #include <vector>
 
@@ -25,10 +27,15 @@ namespace formsolve
 
       /// Storage for @p n_cells cells (active cell index) with @p n_points
       /// quadrature points each; every point starts without a linearisation.
-      void reinit(const unsigned int n_cells, const unsigned int n_points);
+      /// With @p keep_metrics also each point's metric (a non-quadratic
+      /// law's local compliance, where its next local solve starts).
+      void reinit(const unsigned int n_cells,
+                  const unsigned int n_points,
+                  const bool         keep_metrics = false);
 
       /// Forget the last linearisation point (a rejected step, a new mesh):
-      /// the next tangent is the secant one.
+      /// the next tangent is the secant one. The metrics stay: a start of
+      /// the local solves, not a linearisation point.
       void reset();
 
       /// The dual direction w (scaled like D'/rate, |w| <= 1 in the norm
@@ -43,23 +50,44 @@ namespace formsolve
                    const double       cutoff,
                    const bool         smooth);
 
-      /// The strain-rate deviator at the accepted iterate, where a
-      /// non-quadratic law's local solve starts; nullptr if none.
-      const Tensor *start(const unsigned int cell, const unsigned int q) const
+      /// The metric at the accepted iterate (or the last one before a
+      /// reset()), where a non-quadratic law's local solve starts; nullptr
+      /// if none is kept.
+      const material::Mandel6x6 *start(const unsigned int cell,
+                                       const unsigned int q) const
       {
-        const PointState &p = accepted[cell * points + q];
-        return p.valid ? &p.e : nullptr;
+        if (metrics.empty())
+          return nullptr;
+        const MetricState &p = metrics[cell * points + q];
+        return p.valid ? &p.metric : nullptr;
+      }
+      /// Keep @p metric as the trial value of the point (if metrics are
+      /// kept).
+      void trial_metric(const unsigned int         cell,
+                        const unsigned int         q,
+                        const material::Mandel6x6 &metric)
+      {
+        if (!trial_metrics.empty())
+          trial_metrics[cell * points + q] = MetricState{metric, true};
       }
 
       /// The last trial values become the linearisation point. A swap, not
       /// a copy: every assembly writes the trials of all points it visits,
       /// and revert() needs the previous point.
-      void accept() { accepted.swap(trials); }
+      void accept()
+      {
+        accepted.swap(trials);
+        metrics.swap(trial_metrics);
+      }
 
       /// Undo the last accept() (before any trial() since): the previous
       /// linearisation point again, the trials as they were. For a tangent
       /// assembled after its iterate was accepted (a deferred tangent).
-      void revert() { accepted.swap(trials); }
+      void revert()
+      {
+        accepted.swap(trials);
+        metrics.swap(trial_metrics);
+      }
 
       /// For the iteration log, before accept(): the points whose trial
       /// strain rate is at most @p cutoff (rigid), and how many points
@@ -80,8 +108,14 @@ namespace formsolve
         Tensor e;             // strain-rate deviator (1/s)
         bool   valid = false; // false: no linearisation point yet
       };
-      unsigned int            points = 0;
-      std::vector<PointState> accepted, trials;
+      struct MetricState
+      {
+        material::Mandel6x6 metric;
+        bool                valid = false;
+      };
+      unsigned int             points = 0;
+      std::vector<PointState>  accepted, trials;
+      std::vector<MetricState> metrics, trial_metrics; // accepted, trials
     };
   } // namespace solver
 } // namespace formsolve

@@ -36,6 +36,10 @@ namespace formsolve
       /// update_flags() and, if needs_reference(), the reference mapping);
       /// nothing for an isotropic law.
       void reinit(const model::CellKinematics<dim> &k);
+      /// The same from frames computed earlier (PointFrames::cell()), for
+      /// @p n_points points.
+      void reinit(const dealii::Tensor<2, 3> *cell_frames,
+                  const unsigned int          n_points);
 
       /// Hill's map at point q; nullptr for an isotropic law.
       const Mandel6x6 *map(const unsigned int q) const

@@ -73,15 +73,16 @@ namespace formsolve
                              const bool                   newton) const;
       /// The same with Hill's criterion, at a point whose map from the
       /// mapped rate to the current frame is @p map (hill_map()).
-      /// @p start: for a non-quadratic law, the point's strain_rate_deviator
-      /// at an earlier iterate, where its local solve starts (or nullptr).
-      PointResponse
-      evaluate(const SymmetricTensor<2, 3> &strain_rate,
-               const double                 strain_old,
-               const double                 dt,
-               const bool                   newton,
-               const Mandel6x6             &map,
-               const SymmetricTensor<2, 3> *start = nullptr) const;
+      /// @p start: for a non-quadratic law, the point's metric at an earlier
+      /// iterate (PointResponse::metric, the local compliance): its local
+      /// solve starts from metric : e, first order in the change of the
+      /// rate (or from von Mises's direction: nullptr).
+      PointResponse evaluate(const SymmetricTensor<2, 3> &strain_rate,
+                             const double                 strain_old,
+                             const double                 dt,
+                             const bool                   newton,
+                             const Mandel6x6             &map,
+                             const Mandel6x6 *start = nullptr) const;
 
       /// Either: Hill's with @p map, von Mises's without (nullptr).
       PointResponse evaluate(const SymmetricTensor<2, 3> &strain_rate,
@@ -89,7 +90,7 @@ namespace formsolve
                              const double                 dt,
                              const bool                   newton,
                              const Mandel6x6             *map,
-                             const SymmetricTensor<2, 3> *start = nullptr) const
+                             const Mandel6x6             *start = nullptr) const
       {
         return map ? evaluate(strain_rate, strain_old, dt, newton, *map, start)
                    : evaluate(strain_rate, strain_old, dt, newton);
@@ -165,7 +166,7 @@ namespace formsolve
                                  const double                 strain_old,
                                  const double                 dt,
                                  const bool                   newton,
-                                 const SymmetricTensor<2, 3> *start) const;
+                                 const Mandel6x6             *start) const;
 
       FlowStress             law;
       Hill48                 coefficients;

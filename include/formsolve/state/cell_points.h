@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <formsolve/material/hill_orientation.h>
+#include <formsolve/material/point_frames.h>
 #include <formsolve/model/cell_kinematics.h>
 
 #include <vector>
@@ -24,7 +25,9 @@ namespace formsolve
         typename dealii::DoFHandler<dim>::active_cell_iterator;
 
       /// @p extra: what the caller needs at the full points besides the
-      /// frame's own flags.
+      /// frame's own flags. With @p frames (computed at @p full in this
+      /// configuration) the point frames are read from it instead of being
+      /// computed from the deformation gradient.
       CellPoints(const material::RigidViscoplastic &material,
                  const model::Kinematics<dim>      &kinematics,
                  const dealii::Mapping<dim>        &mapping,
@@ -32,7 +35,8 @@ namespace formsolve
                  const dealii::FiniteElement<dim>  &fe,
                  const dealii::Quadrature<dim>     &full,
                  const dealii::Quadrature<dim>     &reduced,
-                 const dealii::UpdateFlags          extra);
+                 const dealii::UpdateFlags          extra,
+                 const material::PointFrames<dim>  *frames = nullptr);
 
       /// Both quadratures and the frame at @p cell, and the strain rates of
       /// @p v at the full points.
@@ -80,6 +84,7 @@ namespace formsolve
 
     private:
       material::HillOrientation<dim>             frame;
+      const material::PointFrames<dim>          *cached;
       model::CellKinematics<dim>                 kf, kr;
       std::vector<dealii::SymmetricTensor<2, 3>> D;
     };
