@@ -321,7 +321,9 @@ namespace formsolve
       const auto stats = step_solver.statistics(report.dt);
       {
         TimerOutput::Scope t(timer, "state update");
-        state.advance(report.dt, history_update);
+        state.advance(report.dt,
+                      history_update,
+                      step_solver.forming_system().point_frames());
         forces_current = true;
         last_dt        = report.dt;
       }

@@ -40,7 +40,12 @@ namespace formsolve
       kf.reinit(cell);
       kr.reinit(cell);
       if (cached)
-        frame.reinit(cached->cell(cell->active_cell_index()), kf.n_points());
+        {
+          Assert(cached->points_per_cell() == kf.n_points(),
+                 ExcDimensionMismatch(cached->points_per_cell(),
+                                      kf.n_points()));
+          frame.reinit(cached->cell(cell->active_cell_index()), kf.n_points());
+        }
       else
         frame.reinit(kf);
       kf.rates(v, D);

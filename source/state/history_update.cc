@@ -54,11 +54,13 @@ namespace formsolve
     } // namespace
 
     template <int dim>
-    void HistoryUpdate<dim>::advance(const DoFHandler<dim> &dof_handler,
-                                     const Mapping<dim>    &mapping,
-                                     const VectorType      &v,
-                                     const double           dt,
-                                     HistoryStorage<dim>   &history) const
+    void
+    HistoryUpdate<dim>::advance(const DoFHandler<dim>            &dof_handler,
+                                const Mapping<dim>               &mapping,
+                                const VectorType                 &v,
+                                const double                      dt,
+                                HistoryStorage<dim>              &history,
+                                const material::PointFrames<dim> *frames) const
     {
       const auto &fe = dof_handler.get_fe();
       const bool  projected =
@@ -72,7 +74,8 @@ namespace formsolve
                              full,
                              reduced,
                              update_jacobians |
-                               (projected ? update_values : update_default));
+                               (projected ? update_values : update_default),
+                             frames);
       CellKinematics<dim>               &kf = points.full();
       CellKinematics<dim>               &kr = points.reduced();
       std::vector<SymmetricTensor<2, 3>> Dr;

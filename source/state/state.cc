@@ -117,10 +117,13 @@ namespace formsolve
     }
 
     template <int dim>
-    void State<dim>::advance(const double dt, const HistoryUpdate<dim> &update)
+    void State<dim>::advance(const double                      dt,
+                             const HistoryUpdate<dim>         &update,
+                             const material::PointFrames<dim> *frames)
     {
       velocity_ghost = velocity;
-      update.advance(dof_handler, *mapping, velocity_ghost, dt, history);
+      update
+        .advance(dof_handler, *mapping, velocity_ghost, dt, history, frames);
       displacement.add(dt, velocity);
       displacement_ghost = displacement;
       update_mapping();

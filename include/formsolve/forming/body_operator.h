@@ -64,6 +64,13 @@ namespace formsolve
       /// first the rigid-plastic transitions for the log (collective).
       void accept(const MPI_Comm comm, const bool count);
 
+      /// The point frames of the step's configuration, once an evaluation
+      /// has computed them (else nullptr).
+      const material::PointFrames<dim> *point_frames() const
+      {
+        return frames.ready() ? &frames : nullptr;
+      }
+
       /// Whether the tangent is the stress-velocity one.
       bool stress_velocity() const { return use_dual; }
       /// {rigid points, to rigid, to plastic} at the last accept() counted.

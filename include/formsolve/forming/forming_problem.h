@@ -67,6 +67,12 @@ namespace formsolve
       /// last (at the end of a converged step: the converged iterate's,
       /// which the tools balance); condensed by the state's constraints.
       const VectorType &body_forces() const { return body_residual; }
+      /// The point frames of the step's configuration (BodyOperator), if
+      /// computed.
+      const material::PointFrames<dim> *point_frames() const
+      {
+        return body.point_frames();
+      }
       /// Velocity of force control j along its direction at the accepted
       /// iterate (mm/s).
       double control_velocity(const unsigned int j) const

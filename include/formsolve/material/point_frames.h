@@ -43,6 +43,8 @@ namespace formsolve
       }
       /// Whether compute() ran since the last clear().
       bool ready() const { return valid; }
+      /// The quadrature points per cell compute() used.
+      unsigned int points_per_cell() const { return n_points; }
 
       /// The frames at the points of the cell of active index @p cell
       /// (nullptr for an isotropic law).

@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <formsolve/material/damage.h>
+#include <formsolve/material/point_frames.h>
 #include <formsolve/material/rigid_viscoplastic.h>
 #include <formsolve/model/kinematics.h>
 #include <formsolve/state/quadrature_history.h>
@@ -35,12 +36,14 @@ namespace formsolve
 
       /// After a converged step of @p dt at velocity @p v (ghosted), in the
       /// configuration of @p mapping (the start of the step): integrate
-      /// strain, thickness strain and damage, store stresses.
-      void advance(const dealii::DoFHandler<dim> &dof_handler,
-                   const dealii::Mapping<dim>    &mapping,
-                   const VectorType              &v,
-                   const double                   dt,
-                   HistoryStorage<dim>           &history) const;
+      /// strain, thickness strain and damage, store stresses. With
+      /// @p frames, the point frames of that configuration (the step's).
+      void advance(const dealii::DoFHandler<dim>    &dof_handler,
+                   const dealii::Mapping<dim>       &mapping,
+                   const VectorType                 &v,
+                   const double                      dt,
+                   HistoryStorage<dim>              &history,
+                   const material::PointFrames<dim> *frames = nullptr) const;
 
       /// Swaps each cell's volume offset c and its volume error
       /// e = ln(dV/dV0) - c (cell means at the reduced points): before an

@@ -95,7 +95,11 @@ namespace formsolve
       void update_contact_areas();
 
       /// After a converged step of @p dt: history, geometry, tools, time.
-      void advance(const double dt, const HistoryUpdate<dim> &update);
+      /// @p frames: the point frames of the step's configuration, if at
+      /// hand (the forming system's).
+      void advance(const double                      dt,
+                   const HistoryUpdate<dim>         &update,
+                   const material::PointFrames<dim> *frames = nullptr);
 
       StepSnapshot snapshot() const;
       void         restore(const StepSnapshot &s);
